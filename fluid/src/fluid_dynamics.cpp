@@ -1,0 +1,120 @@
+#include "fluid_dynamics.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "continuity.hpp"
+#include "sphcore/kernel.hpp"
+#include "sphcore/pair_terms.hpp"
+#include "sphcore/renormalisation.hpp"
+#include "viscous_stress.hpp"
+#include "wall_pressure.hpp"
+
+namespace cosph::fluid {
+
+namespace kernel = sph::kernel;
+
+namespace {
+double support_squared(const FluidParameters& par) {
+  const double reach = kernel::kSupport * par.h;
+  return reach * reach;
+}
+}  // namespace
+
+void compute_continuity_and_gradients(FluidParticles& P, const sph::CellGrid& grid,
+                                      const FluidParameters& par) {
+  const long n = static_cast<long>(P.size());
+  const double h = par.h, support2 = support_squared(par);
+  const double diffusion = par.delta * h * par.c0;
+  P.grad_rho_next.resize(P.size());
+
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    if (!P.is_water(i)) continue;
+    const Vec2 x_i = P.x[i], v_i = P.v[i], grad_rho_i = P.grad_rho[i];
+    const double rho_i = P.rho[i];
+    Mat2 M = Mat2::Zero(), grad_v_raw = Mat2::Zero();
+    Vec2 grad_rho_raw = Vec2::Zero();
+    double drho_i = 0.0, diffusion_i = 0.0;
+    grid.for_each_candidate_range(x_i, [&](int begin, int end) {
+      for (int j = begin; j < end; ++j) {
+        const Vec2 x_ij = x_i - P.x[j];
+        const double r2 = x_ij.squaredNorm();
+        if (r2 >= support2 || j == i) continue;
+        const double r_ij = std::sqrt(r2);
+        const Vec2 grad_W_ij = kernel::grad_W(x_ij, r_ij, h);
+        const double rho_j = P.rho[j], V_j = P.m[j] / rho_j;
+        const Vec2 v_ij = v_i - P.v[j];
+        drho_i += continuity_pair(rho_i, V_j, v_ij, grad_W_ij);
+        if (!P.is_water(j)) continue;
+        diffusion_i += density_diffusion_pair(rho_i, rho_j, x_ij, r_ij, grad_rho_i, P.grad_rho[j],
+                                              V_j, grad_W_ij);
+        M += sph::renormalisation_term(V_j, grad_W_ij, x_ij);
+        grad_rho_raw += (V_j * (rho_j - rho_i)) * grad_W_ij;
+        grad_v_raw += (V_j * -v_ij) * grad_W_ij.transpose();
+      }
+    });
+    P.drho[i] = drho_i + diffusion * diffusion_i;
+    const Mat2 L = sph::renormalisation_matrix(M);
+    P.grad_rho_next[i] = L * grad_rho_raw;
+    P.tau[i] = viscous_stress(par.mu, grad_v_raw * L.transpose());
+  }
+  P.grad_rho.swap(P.grad_rho_next);
+}
+
+void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid,
+                           const FluidParameters& par, const TaitEquationOfState& eos) {
+  const long n = static_cast<long>(P.size());
+  const double h = par.h, support2 = support_squared(par);
+#pragma omp parallel for schedule(static)
+  for (long w = 0; w < n; ++w) {
+    if (P.is_water(w)) continue;
+    const Vec2 x_w = P.x[w];
+    WallPressureSum sum;
+    grid.for_each_candidate_range(x_w, [&](int begin, int end) {
+      for (int f = begin; f < end; ++f) {
+        if (!P.is_water(f)) continue;
+        const Vec2 x_wf = x_w - P.x[f];
+        const double r2 = x_wf.squaredNorm();
+        if (r2 >= support2) continue;
+        sum.add(P.p[f], P.rho[f], x_wf, kernel::W(std::sqrt(r2), h));
+      }
+    });
+    // Bounded below so that the Tait law can still give the wall a density.
+    P.p[w] = std::max(sum.wall_pressure(par.run.gravity), -0.5 * eos.P0());
+    P.rho[w] = eos.density(P.p[w]);
+    P.tau[w] = Mat2::Zero();
+  }
+}
+
+void compute_accelerations(FluidParticles& P, const sph::CellGrid& grid,
+                           const FluidParameters& par) {
+  const long n = static_cast<long>(P.size());
+  const double h = par.h, support2 = support_squared(par);
+
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    if (!P.is_water(i)) continue;
+    const Vec2 x_i = P.x[i], v_i = P.v[i];
+    const double rho_i = P.rho[i];
+    const Mat2 sigma_i = -P.p[i] * Mat2::Identity() + P.tau[i];
+    Vec2 a_i = par.run.gravity;
+    grid.for_each_candidate_range(x_i, [&](int begin, int end) {
+      for (int j = begin; j < end; ++j) {
+        const Vec2 x_ij = x_i - P.x[j];
+        const double r2 = x_ij.squaredNorm();
+        if (r2 >= support2 || j == i) continue;
+        const double r_ij = std::sqrt(r2);
+        const Vec2 grad_W_ij = kernel::grad_W(x_ij, r_ij, h);
+        const double rho_j = P.rho[j];
+        const Mat2 sigma_j = -P.p[j] * Mat2::Identity() + P.tau[j];
+        const double Pi_ij = sph::artificial_viscosity(x_ij, v_i - P.v[j], h, par.c0,
+                                                       0.5 * (rho_i + rho_j), par.A, par.B);
+        a_i += sph::momentum_pair(P.m[j], sigma_i, sigma_j, rho_i, rho_j, Pi_ij, grad_W_ij);
+      }
+    });
+    P.a[i] = a_i;
+  }
+}
+
+}  // namespace cosph::fluid

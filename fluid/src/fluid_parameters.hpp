@@ -1,0 +1,24 @@
+// The case's "fluid" block, validated, with the defaults of SPEC.md applied.
+#pragma once
+
+#include "sphcore/case_file.hpp"
+#include "sphcore/run_parameters.hpp"
+
+namespace cosph::fluid {
+
+struct FluidParameters {
+  sph::RunParameters run;
+  double dx;     // initial spacing
+  double h;      // smoothing length
+  double rho0;   // reference density
+  double mu;     // dynamic viscosity
+  double c0;     // artificial sound speed
+  double delta;  // delta-SPH coefficient; 0 = off
+  double A, B;   // Monaghan artificial viscosity
+  double left_wall_x, floor_y;  // gauges
+};
+
+// Throws sph::ConfigError naming the file, field and reason for bad input.
+FluidParameters read_fluid_parameters(const sph::CaseFile& case_file);
+
+}  // namespace cosph::fluid

@@ -1,0 +1,59 @@
+// The fluid solver's particles, struct-of-arrays: water and the rigid wall
+// particles that hold it, in one set so that one neighbour grid serves both.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "sphcore/types.hpp"
+
+namespace cosph::fluid {
+
+using sph::Mat2;
+using sph::Vec2;
+
+enum class Kind : std::uint8_t { water = 0, wall = 1 };
+
+struct FluidParticles {
+  // State, carried from step to step (permuted with the neighbour grid).
+  std::vector<int> id;
+  std::vector<Kind> kind;
+  std::vector<Vec2> x, v;
+  std::vector<double> rho, m;
+
+  // Renormalised density gradient <grad rho> of the previous step: state too,
+  // since the density diffusion reads it.
+  std::vector<Vec2> grad_rho;
+
+  // Derived each step from the state.
+  std::vector<double> p;            // pressure (walls: extrapolated from the water)
+  std::vector<Mat2> tau;            // viscous stress
+  std::vector<Vec2> grad_rho_next;  // being computed
+  std::vector<Vec2> a;         // dv/dt
+  std::vector<double> drho;    // drho/dt
+
+  std::size_t size() const { return x.size(); }
+  bool is_water(std::size_t i) const { return kind[i] == Kind::water; }
+
+  void add(int particle_id, Kind particle_kind, const Vec2& position, double density, double mass) {
+    id.push_back(particle_id);
+    kind.push_back(particle_kind);
+    x.push_back(position);
+    v.push_back(Vec2::Zero());
+    rho.push_back(density);
+    m.push_back(mass);
+  }
+
+  // Sizes the derived fields to match the state.
+  void resize_derived() {
+    const std::size_t n = size();
+    grad_rho.assign(n, Vec2::Zero());
+    p.assign(n, 0.0);
+    tau.assign(n, Mat2::Zero());
+    grad_rho_next.assign(n, Vec2::Zero());
+    a.assign(n, Vec2::Zero());
+    drho.assign(n, 0.0);
+  }
+};
+
+}  // namespace cosph::fluid

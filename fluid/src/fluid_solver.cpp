@@ -1,0 +1,114 @@
+#include "fluid_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "fluid_dynamics.hpp"
+#include "fluid_scene.hpp"
+#include "sphcore/kernel.hpp"
+#include "sphcore/permutation.hpp"
+#include "sphcore/runaway_error.hpp"
+
+namespace cosph::fluid {
+
+FluidSolver::FluidSolver(const sph::CaseFile& case_file, const FluidParameters& parameters)
+    : parameters_(parameters),
+      eos_(parameters.rho0, parameters.c0),
+      particles_(build_fluid_scene(case_file, parameters)) {
+  sort_and_find_neighbours();
+  compute_continuity_and_gradients(particles_, grid_, parameters_);  // only for grad_rho
+  update_pressure_and_accelerations();
+}
+
+void FluidSolver::sort_and_find_neighbours() {
+  FluidParticles& P = particles_;
+  grid_.build(P.x, sph::kernel::kSupport * parameters_.h);
+  sph::permute(grid_.order(), P.id, P.kind, P.x, P.v, P.rho, P.m, P.grad_rho);
+}
+
+void FluidSolver::update_pressure_and_accelerations() {
+  FluidParticles& P = particles_;
+  const long n = static_cast<long>(P.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i)
+    if (P.is_water(i)) P.p[i] = eos_.pressure(P.rho[i]);
+  compute_wall_pressure(P, grid_, parameters_, eos_);
+  compute_accelerations(P, grid_, parameters_);
+}
+
+sph::StepLimits FluidSolver::step_limits() const {
+  const FluidParticles& P = particles_;
+  double v_max2 = 0.0, a_max2 = 0.0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (!P.is_water(i)) continue;
+    v_max2 = std::max(v_max2, P.v[i].squaredNorm());
+    a_max2 = std::max(a_max2, P.a[i].squaredNorm());
+  }
+  return sph::step_limits(parameters_.run.cfl, parameters_.h, parameters_.c0, std::sqrt(v_max2),
+                          std::sqrt(a_max2), parameters_.mu / parameters_.rho0);
+}
+
+void FluidSolver::step(double dt) {
+  FluidParticles& P = particles_;
+  const long n = static_cast<long>(P.size());
+  const double half = 0.5 * dt;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    if (!P.is_water(i)) continue;
+    P.v[i] += half * P.a[i];
+    P.x[i] += dt * P.v[i];
+  }
+  sort_and_find_neighbours();
+  compute_continuity_and_gradients(P, grid_, parameters_);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i)
+    if (P.is_water(i)) P.rho[i] += dt * P.drho[i];
+  update_pressure_and_accelerations();
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i)
+    if (P.is_water(i)) P.v[i] += half * P.a[i];
+  time_ += dt;
+  ++steps_;
+  check_state();
+}
+
+void FluidSolver::check_state() const {
+  const FluidParticles& P = particles_;
+  const double rho0 = parameters_.rho0, c0 = parameters_.c0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (!P.is_water(i)) continue;
+    const char* reason = nullptr;
+    if (!P.x[i].allFinite() || !P.v[i].allFinite() || !std::isfinite(P.rho[i]))
+      reason = "its state is not finite";
+    else if (P.v[i].norm() > c0)
+      reason = "it moves faster than the sound speed c0 (weak compressibility is lost)";
+    else if (P.rho[i] < 0.5 * rho0 || P.rho[i] > 2.0 * rho0)
+      reason = "its density left [0.5, 2] rho0";
+    if (reason == nullptr) continue;
+    std::ostringstream message;
+    message << "water particle " << P.id[i] << " at (" << P.x[i].x() << ", " << P.x[i].y()
+            << ") m, t = " << time_ << " s, step " << steps_ << ": " << reason
+            << " (speed " << P.v[i].norm() << " m/s, density " << P.rho[i]
+            << " kg/m^3); the run has blown up: try a smaller run.cfl";
+    throw sph::RunawayError(message.str());
+  }
+}
+
+sph::Snapshot FluidSolver::snapshot() const {
+  const FluidParticles& P = particles_;
+  sph::Snapshot snapshot(P.x);
+  std::vector<int> kind(P.size());
+  std::transform(P.kind.begin(), P.kind.end(), kind.begin(),
+                 [](Kind k) { return static_cast<int>(k); });
+  snapshot.add_scalar("id", P.id);
+  snapshot.add_scalar("kind", kind);
+  snapshot.add_vector("velocity", P.v);
+  snapshot.add_scalar("density", P.rho);
+  snapshot.add_scalar("pressure", P.p);
+  snapshot.add_vector("acceleration", P.a);
+  snapshot.add_scalar("drho", P.drho);
+  return snapshot;
+}
+
+}  // namespace cosph::fluid

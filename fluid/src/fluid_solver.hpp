@@ -1,0 +1,56 @@
+// The fluid solver: owns the water and wall particles and advances them by
+// kick-drift-kick, one force evaluation per step (SPEC.md "Time integration").
+//
+// Step from t to t + dt, with a known at t:
+//   v   += dt/2 a                         (kick)
+//   x   += dt v,  rho += dt drho/dt(v)    (drift: density moves with positions)
+//   a    = a(x, rho)                      (the one force evaluation)
+//   v   += dt/2 a                         (kick)
+// Density is drifted with the half-step velocity, not kicked alongside it: the
+// sound waves of weak compressibility trade energy between rho and v, and
+// updating both from the same old state would amplify them every step.
+#pragma once
+
+#include "equation_of_state.hpp"
+#include "fluid_parameters.hpp"
+#include "fluid_particles.hpp"
+#include "gauges.hpp"
+#include "sphcore/case_file.hpp"
+#include "sphcore/cell_grid.hpp"
+#include "sphcore/snapshot_writer.hpp"
+#include "sphcore/time_step.hpp"
+
+namespace cosph::fluid {
+
+class FluidSolver {
+ public:
+  FluidSolver(const sph::CaseFile& case_file, const FluidParameters& parameters);
+
+  // The largest step the fluid allows now.
+  sph::StepLimits step_limits() const;
+
+  // Advances by dt. Throws sph::RunawayError if the new state is not physical;
+  // the particles then hold that bad state.
+  void step(double dt);
+
+  double time() const { return time_; }
+  long steps() const { return steps_; }
+  const FluidParticles& particles() const { return particles_; }
+  const FluidParameters& parameters() const { return parameters_; }
+  WaterGauges gauges() const { return measure(particles_, parameters_); }
+  sph::Snapshot snapshot() const;
+
+ private:
+  void sort_and_find_neighbours();
+  void update_pressure_and_accelerations();
+  void check_state() const;
+
+  FluidParameters parameters_;
+  TaitEquationOfState eos_;
+  FluidParticles particles_;
+  sph::CellGrid grid_;
+  double time_ = 0.0;
+  long steps_ = 0;
+};
+
+}  // namespace cosph::fluid

@@ -1,0 +1,31 @@
+// Pressure of a rigid wall particle extrapolated from the water around it
+// (Adami, Hu & Adams 2012, J. Comput. Phys. 231:7057, eq. 27):
+//   P_w = ( sum_f P_f W_wf + (g - a_w) . sum_f rho_f (x_w - x_f) W_wf ) / sum_f W_wf
+// Walls here do not move, so a_w = 0. Unlike walls that evolve their own
+// density, this leaves no gap of about h between water and wall.
+#pragma once
+
+#include "sphcore/types.hpp"
+
+namespace cosph::fluid {
+
+using sph::Vec2;
+
+struct WallPressureSum {
+  double weight = 0.0;  // sum_f W_wf
+  double pressure = 0.0;  // sum_f P_f W_wf
+  Vec2 moment = Vec2::Zero();  // sum_f rho_f (x_w - x_f) W_wf
+
+  void add(double P_f, double rho_f, const Vec2& x_wf, double W_wf) {
+    weight += W_wf;
+    pressure += P_f * W_wf;
+    moment += (rho_f * W_wf) * x_wf;
+  }
+
+  // Zero for a wall particle with no water in reach.
+  double wall_pressure(const Vec2& gravity) const {
+    return weight > 0.0 ? (pressure + gravity.dot(moment)) / weight : 0.0;
+  }
+};
+
+}  // namespace cosph::fluid

@@ -1,0 +1,60 @@
+// Cell-linked-list neighbour search, O(N) per build.
+//
+// Particles are binned into square cells no smaller than the largest support
+// radius, then counting-sorted by cell. A solver permutes its particle arrays
+// into that order (permutation.hpp), so the candidates of a particle are three
+// contiguous index ranges, one per row of the 3x3 block of cells: the loops
+// stream memory instead of chasing pointers.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <span>
+#include <vector>
+
+#include "sphcore/types.hpp"
+
+namespace sph {
+
+class CellGrid {
+ public:
+  // Bins the positions. cell_size must be at least the largest interaction
+  // range. Throws std::runtime_error if the particles spread over so many cells
+  // that the grid would not fit in memory (a run that has blown up).
+  void build(std::span<const Vec2> x, double cell_size);
+
+  // Particle indices sorted by cell: new index k holds old particle order()[k].
+  const std::vector<int>& order() const { return order_; }
+
+  // Calls visit(begin, end) for the (at most three) index ranges, in sorted
+  // order, of the particles in the 3x3 cells around point p. Valid for a point
+  // anywhere, inside the grid or not.
+  template <class Visit>
+  void for_each_candidate_range(const Vec2& p, Visit&& visit) const {
+    const long cx = cell_coordinate(p.x(), origin_.x());
+    const long cy = cell_coordinate(p.y(), origin_.y());
+    const long x_lo = std::max(cx - 1, 0L), x_hi = std::min(cx + 1, nx_ - 1);
+    if (x_lo > x_hi) return;
+    for (long row = std::max(cy - 1, 0L); row <= std::min(cy + 1, ny_ - 1); ++row) {
+      const int begin = cell_begin_[row * nx_ + x_lo];
+      const int end = cell_begin_[row * nx_ + x_hi + 1];
+      if (begin < end) visit(begin, end);
+    }
+  }
+
+  double cell_size() const { return cell_size_; }
+
+ private:
+  long cell_coordinate(double coordinate, double origin) const {
+    return static_cast<long>(std::floor((coordinate - origin) * inverse_cell_size_));
+  }
+
+  double cell_size_ = 0.0, inverse_cell_size_ = 0.0;
+  Vec2 origin_ = Vec2::Zero();
+  long nx_ = 0, ny_ = 0;
+  std::vector<int> cell_begin_;  // nx*ny + 1 prefix sums
+  std::vector<int> order_;
+  std::vector<long> cell_of_;
+};
+
+}  // namespace sph

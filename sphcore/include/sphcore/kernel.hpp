@@ -1,0 +1,38 @@
+// The cubic-spline kernel of SPEC.md (Monaghan & Lattanzio 1985), 2-D
+// normalisation 10 / (7 pi h^2), support radius 2h. Defined once here: every
+// solver, the coupler and the tests use this kernel and its gradient.
+#pragma once
+
+#include <numbers>
+
+#include "sphcore/types.hpp"
+
+namespace sph::kernel {
+
+inline constexpr double kSupport = 2.0;  // support radius in units of h
+
+inline constexpr double normalisation(double h) { return 10.0 / (7.0 * std::numbers::pi * h * h); }
+
+// W(r, h).
+inline double W(double r, double h) {
+  const double s = r / h;
+  if (s >= 2.0) return 0.0;
+  const double f = s < 1.0 ? 1.0 - 1.5 * s * s + 0.75 * s * s * s : 0.25 * (2.0 - s) * (2.0 - s) * (2.0 - s);
+  return normalisation(h) * f;
+}
+
+// dW/dr(r, h).
+inline double dW_dr(double r, double h) {
+  const double s = r / h;
+  if (s >= 2.0) return 0.0;
+  const double df = s < 1.0 ? -3.0 * s + 2.25 * s * s : -0.75 * (2.0 - s) * (2.0 - s);
+  return normalisation(h) * df / h;
+}
+
+// grad_i W_ij = dW/dr(r_ij) x_ij / r_ij; zero for a particle with itself.
+inline Vec2 grad_W(const Vec2& x_ij, double r_ij, double h) {
+  if (r_ij <= 0.0) return Vec2::Zero();
+  return (dW_dr(r_ij, h) / r_ij) * x_ij;
+}
+
+}  // namespace sph::kernel

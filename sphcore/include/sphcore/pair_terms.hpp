@@ -1,0 +1,41 @@
+// The pair terms of the momentum equation that every phase shares (SPEC.md
+// "Momentum: the coupling rule"). The fluid, the solid and the coupler call
+// these, so a fluid-solid pair is computed with exactly the same formula as a
+// pair inside one phase.
+#pragma once
+
+#include <cmath>
+
+#include "sphcore/types.hpp"
+
+namespace sph {
+
+// Monaghan's artificial viscosity Pi_ij; zero for receding pairs (v_ij . x_ij >= 0).
+// h_ij, c_ij, rho_ij are pair averages.
+inline double artificial_viscosity(const Vec2& x_ij, const Vec2& v_ij, double h_ij, double c_ij,
+                                   double rho_ij, double A, double B) {
+  const double v_dot_x = v_ij.dot(x_ij);
+  if (v_dot_x >= 0.0) return 0.0;
+  const double theta_ij = h_ij * v_dot_x / (x_ij.squaredNorm() + 0.01 * h_ij * h_ij);
+  return (-A * c_ij * theta_ij + B * theta_ij * theta_ij) / rho_ij;
+}
+
+// Contribution of j to dv_i/dt:
+//   m_j ( (sigma_i + sigma_j) / (rho_i rho_j) - Pi_ij I ) . grad_i W_ij.
+// The bracket is symmetric in i, j and grad_j W_ji = -grad_i W_ij exactly, so
+// m_i a_i = -m_j a_j to the last bit: the exchange conserves momentum.
+inline Vec2 momentum_pair(double m_j, const Mat2& sigma_i, const Mat2& sigma_j, double rho_i,
+                          double rho_j, double Pi_ij, const Vec2& grad_W_ij) {
+  const Mat2 bracket = (sigma_i + sigma_j) / (rho_i * rho_j) - Pi_ij * Mat2::Identity();
+  return m_j * (bracket * grad_W_ij);
+}
+
+// Von Mises equivalent stress of a 2-D stress tensor (SPEC.md "Fracture"):
+//   sqrt( (3 sigma_ab sigma_ab - sigma_aa sigma_bb) / 2 ).
+inline double von_mises(const Mat2& sigma) {
+  const double trace = sigma.trace();
+  const double value = 0.5 * (3.0 * sigma.squaredNorm() - trace * trace);
+  return value > 0.0 ? std::sqrt(value) : 0.0;
+}
+
+}  // namespace sph

@@ -1,0 +1,20 @@
+// The case's "run" block, validated, with its defaults applied.
+#pragma once
+
+#include "sphcore/case_file.hpp"
+#include "sphcore/types.hpp"
+
+namespace sph {
+
+struct RunParameters {
+  double end_time;
+  double output_interval;
+  double snapshot_interval;
+  double cfl;
+  Vec2 gravity;
+  int threads;  // 0: all cores
+};
+
+RunParameters read_run_parameters(const CaseFile& case_file);
+
+}  // namespace sph

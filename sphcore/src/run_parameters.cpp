@@ -1,0 +1,26 @@
+#include "sphcore/run_parameters.hpp"
+
+namespace sph {
+
+RunParameters read_run_parameters(const CaseFile& case_file) {
+  const auto& run = case_file.config.run();
+  require(case_file.config.has_run(), case_file, "run", "missing (it sets end_time and the outputs)");
+  require(run.end_time() > 0.0, case_file, "run.end_time",
+          "must be positive, got " + format_number(run.end_time()) + " s");
+  require(run.output_interval() >= 0.0, case_file, "run.output_interval", "must not be negative");
+  require(run.snapshot_interval() >= 0.0, case_file, "run.snapshot_interval",
+          "must not be negative");
+  require(run.cfl() >= 0.0 && run.cfl() <= 1.0, case_file, "run.cfl",
+          "must lie in (0, 1], got " + format_number(run.cfl()));
+  require(run.threads() >= 0, case_file, "run.threads", "must not be negative");
+  RunParameters p;
+  p.end_time = run.end_time();
+  p.output_interval = run.output_interval() > 0.0 ? run.output_interval() : p.end_time / 500.0;
+  p.snapshot_interval = run.snapshot_interval() > 0.0 ? run.snapshot_interval() : p.end_time / 20.0;
+  p.cfl = run.cfl() > 0.0 ? run.cfl() : 0.25;
+  p.gravity = Vec2(run.gravity().x(), run.gravity().y());
+  p.threads = run.threads();
+  return p;
+}
+
+}  // namespace sph

@@ -1,0 +1,131 @@
+#include "sphcore/snapshot_writer.hpp"
+
+#include <hdf5.h>
+
+#include <cstdio>
+#include <fstream>
+#include <stdexcept>
+
+namespace sph {
+
+Snapshot::Snapshot(std::span<const Vec2> positions) : size_(positions.size()) {
+  positions_.reserve(3 * size_);
+  for (const Vec2& p : positions) positions_.insert(positions_.end(), {p.x(), p.y(), 0.0});
+}
+
+void Snapshot::add_scalar(const std::string& name, std::span<const double> values) {
+  fields_.push_back({name, 1, std::vector<double>(values.begin(), values.end())});
+}
+
+void Snapshot::add_scalar(const std::string& name, std::span<const int> values) {
+  fields_.push_back({name, 1, std::vector<double>(values.begin(), values.end())});
+}
+
+void Snapshot::add_vector(const std::string& name, std::span<const Vec2> values) {
+  Field field{name, 3, {}};
+  field.data.reserve(3 * values.size());
+  for (const Vec2& v : values) field.data.insert(field.data.end(), {v.x(), v.y(), 0.0});
+  fields_.push_back(std::move(field));
+}
+
+SnapshotWriter::SnapshotWriter(std::string out_dir, std::string name)
+    : out_dir_(std::move(out_dir)), name_(std::move(name)) {}
+
+std::string SnapshotWriter::write(const Snapshot& snapshot, double time) {
+  char number[16];
+  std::snprintf(number, sizeof number, "%06zu", entries_.size());
+  const std::string file = name_ + "_" + number + ".h5";
+  write_file(snapshot, time, out_dir_ + "/" + file);
+  Entry entry{file, time, snapshot.size(), {}};
+  for (const auto& field : snapshot.fields()) entry.fields.emplace_back(field.name, field.components);
+  entries_.push_back(std::move(entry));
+  write_index();
+  return out_dir_ + "/" + file;
+}
+
+std::string SnapshotWriter::write_extra(const Snapshot& snapshot, double time,
+                                        const std::string& label) {
+  const std::string path = out_dir_ + "/" + name_ + "_" + label + ".h5";
+  write_file(snapshot, time, path);
+  return path;
+}
+
+namespace {
+
+void write_dataset(hid_t file, const std::string& name, const std::vector<double>& data,
+                   std::size_t rows, int components, const std::string& path) {
+  const hsize_t dims[2] = {rows, static_cast<hsize_t>(components)};
+  const hid_t space = H5Screate_simple(components == 1 ? 1 : 2, dims, nullptr);
+  const hid_t set = H5Dcreate2(file, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT,
+                               H5P_DEFAULT, H5P_DEFAULT);
+  const herr_t status =
+      set < 0 ? -1 : H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
+  if (set >= 0) H5Dclose(set);
+  H5Sclose(space);
+  if (status < 0) throw std::runtime_error(path + ": cannot write dataset " + name);
+}
+
+}  // namespace
+
+void SnapshotWriter::write_file(const Snapshot& snapshot, double time,
+                                const std::string& path) const {
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // we report errors ourselves
+  const std::string partial = path + ".partial";
+  const hid_t file = H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  if (file < 0) throw std::runtime_error(partial + ": cannot create HDF5 file");
+  try {
+    write_dataset(file, "/position", snapshot.positions(), snapshot.size(), 3, path);
+    for (const auto& field : snapshot.fields())
+      write_dataset(file, "/" + field.name, field.data, snapshot.size(), field.components, path);
+    const hid_t scalar = H5Screate(H5S_SCALAR);
+    const hid_t attribute =
+        H5Acreate2(file, "time", H5T_IEEE_F64LE, scalar, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(attribute, H5T_NATIVE_DOUBLE, &time);
+    H5Aclose(attribute);
+    H5Sclose(scalar);
+  } catch (...) {
+    H5Fclose(file);
+    throw;
+  }
+  if (H5Fclose(file) < 0 || std::rename(partial.c_str(), path.c_str()) != 0)
+    throw std::runtime_error(path + ": cannot finish HDF5 file");
+}
+
+void SnapshotWriter::write_index() const {
+  const std::string path = out_dir_ + "/" + name_ + ".xdmf";
+  const std::string partial = path + ".partial";
+  {
+    std::ofstream out(partial);
+    out.precision(12);
+    out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n <Domain>\n"
+        << "  <Grid Name=\"" << name_ << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+    for (const Entry& e : entries_) {
+      auto item = [&](const std::string& dataset, int components) {
+        out << "      <DataItem Dimensions=\"" << e.size;
+        if (components > 1) out << " " << components;
+        out << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << e.file << ":/"
+            << dataset << "</DataItem>\n";
+      };
+      out << "   <Grid Name=\"" << name_ << "\" GridType=\"Uniform\">\n"
+          << "    <Time Value=\"" << e.time << "\"/>\n"
+          << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << e.size
+          << "\" NodesPerElement=\"1\"/>\n"
+          << "    <Geometry GeometryType=\"XYZ\">\n";
+      item("position", 3);
+      out << "    </Geometry>\n";
+      for (const auto& [field, components] : e.fields) {
+        out << "    <Attribute Name=\"" << field << "\" AttributeType=\""
+            << (components == 1 ? "Scalar" : "Vector") << "\" Center=\"Node\">\n";
+        item(field, components);
+        out << "    </Attribute>\n";
+      }
+      out << "   </Grid>\n";
+    }
+    out << "  </Grid>\n </Domain>\n</Xdmf>\n";
+    if (!out) throw std::runtime_error(partial + ": cannot write XDMF index");
+  }
+  if (std::rename(partial.c_str(), path.c_str()) != 0)
+    throw std::runtime_error(path + ": cannot write XDMF index");
+}
+
+}  // namespace sph

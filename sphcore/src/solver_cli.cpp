@@ -1,0 +1,59 @@
+#include "sphcore/solver_cli.hpp"
+
+#include <cstdlib>
+#include <exception>
+#include <filesystem>
+#include <iostream>
+
+#include "sphcore/case_file.hpp"
+
+namespace sph {
+
+SolverArgs parse_solver_args(int argc, char** argv, const std::string& program,
+                             const std::string& summary) {
+  const std::string usage = "usage: " + program +
+                            " --case FILE --out DIR [--set FIELD=VALUE ...] [--endpoint E]";
+  SolverArgs args;
+  for (int i = 1; i < argc; ++i) {
+    const std::string option = argv[i];
+    if (option == "--help" || option == "-h") {
+      std::cout << usage << "\n\n" << summary << "\n\n"
+                << "  --case FILE          case file (protobuf text format, proto/case.proto)\n"
+                << "  --out DIR            output folder (created if missing)\n"
+                << "  --set FIELD=VALUE    override a case field, e.g. fluid.spacing=0.004\n"
+                << "  --endpoint E         coupler endpoint (ipc:// or tcp://); none: run alone\n"
+                << "\nUsually started by the launcher: coupler/cosph run CASE --out DIR\n";
+      std::exit(0);
+    }
+    if (i + 1 >= argc) throw ConfigError(program + ": " + option + " needs a value\n" + usage);
+    const std::string value = argv[++i];
+    if (option == "--case") args.case_path = value;
+    else if (option == "--out") args.out_dir = value;
+    else if (option == "--set") args.overrides.push_back(value);
+    else if (option == "--endpoint") args.endpoint = value;
+    else throw ConfigError(program + ": unknown option " + option + "\n" + usage);
+  }
+  if (args.case_path.empty() || args.out_dir.empty())
+    throw ConfigError(program + ": --case and --out are required\n" + usage);
+  return args;
+}
+
+int run_guarded(const std::string& program, const std::function<int()>& body) {
+  try {
+    return body();
+  } catch (const ConfigError& error) {
+    std::cerr << program << ": error: " << error.what() << std::endl;
+    return 2;
+  } catch (const std::exception& error) {
+    std::cerr << program << ": error: " << error.what() << std::endl;
+    return 1;
+  }
+}
+
+void make_output_dir(const std::string& dir) {
+  std::error_code error;
+  std::filesystem::create_directories(dir, error);
+  if (error) throw ConfigError(dir + ": cannot create output folder: " + error.message());
+}
+
+}  // namespace sph

@@ -1,0 +1,356 @@
+"""Tests of the cosph launcher (coupler/cosph) against fake executables.
+
+Run from the repository root:
+    /usr/bin/python3 -m unittest discover -s tests/launcher -v
+
+Each test copies the launcher into a temporary repository layout
+(tmp/repo/coupler/cosph, tmp/repo/cases/*.pbtxt), so the case lookup is
+tested against known cases, and points COSPH_BIN at fake_bin/, whose
+programs are steered by FAKE_* variables (see fake_bin/fake_solver.py) and
+record their pids and arguments in FAKE_DIR.
+"""
+import json
+import os
+import pty
+import shutil
+import signal
+import subprocess
+import tempfile
+import time
+import unittest
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+SCRIPT = HERE.parent.parent / "coupler" / "cosph"
+FAKE_BIN = HERE / "fake_bin"
+THREE = "cosph-coupler cosph-fluid cosph-solid"
+ALL = "cosph-coupler,cosph-fluid,cosph-solid"
+
+
+def alive(pid):
+    """True while the process exists and is not a zombie (a killed orphan may
+    stay a zombie if this container's init does not reap it)."""
+    try:
+        with open(f"/proc/{pid}/stat") as f:
+            state = f.read().rsplit(")", 1)[1].split()[0]
+    except (FileNotFoundError, ProcessLookupError, IndexError):
+        return False
+    return state not in ("Z", "X")
+
+
+class LauncherTest(unittest.TestCase):
+    def setUp(self):
+        # Short temp path: the default endpoint is a unix socket inside --out.
+        self.tmp = Path(tempfile.mkdtemp(prefix="cosph-"))
+        repo = self.tmp / "repo"
+        (repo / "coupler").mkdir(parents=True)
+        shutil.copy2(SCRIPT, repo / "coupler" / "cosph")
+        self.script = repo / "coupler" / "cosph"
+        cases = repo / "cases"
+        cases.mkdir()
+        (cases / "dam_break.pbtxt").write_text("name: 'dam_break'\n")
+        (cases / "sloshing.pbtxt").write_text("name: 'sloshing'\n")
+        (cases / "README.md").write_text("not a case\n")
+        self.state = self.tmp / "state"
+        self.state.mkdir()
+        self.out = self.tmp / "out"
+        self.env = {k: v for k, v in os.environ.items()
+                    if not k.startswith(("COSPH_", "FAKE_"))}
+        self.env.update(COSPH_BIN=str(FAKE_BIN), FAKE_DIR=str(self.state))
+
+    def tearDown(self):
+        # Safety net only: a leftover here means a test has already failed.
+        for pid in self.recorded_pids().values():
+            if alive(pid):
+                os.kill(pid, signal.SIGKILL)
+        shutil.rmtree(self.tmp, ignore_errors=True)
+
+    # -- helpers
+
+    def launch(self, *args, **env):
+        return subprocess.Popen([str(self.script), *args], env={**self.env, **env},
+                                stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                                stderr=subprocess.PIPE, text=True,
+                                start_new_session=True)
+
+    def cosph(self, *args, timeout=15, **env):
+        proc = self.launch(*args, **env)
+        try:
+            out, err = proc.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGKILL)
+            out, err = proc.communicate()
+            self.fail(f"launcher did not finish in {timeout} s\n{out}\n{err}")
+        return proc.returncode, out, err
+
+    def run_case(self, *extra, **env):
+        return self.cosph("run", "dam_break", "--out", str(self.out), *extra, **env)
+
+    def recorded_pids(self):
+        """{file stem: pid} for every process (and grandchild) the fakes started."""
+        return {p.name[:-len(".pid")]: int(p.read_text())
+                for p in self.state.glob("*.pid")}
+
+    def fake_args(self, name):
+        return json.loads((self.state / f"{name}.args").read_text())
+
+    def wait_for_pids(self, names, timeout=5.0):
+        deadline = time.monotonic() + timeout
+        while time.monotonic() < deadline:
+            if all((self.state / f"{n}.pid").exists() for n in names):
+                return
+            time.sleep(0.02)
+        self.fail(f"fakes {names} did not start; have {sorted(self.recorded_pids())}")
+
+    def assert_all_gone(self, expected_count):
+        pids = self.recorded_pids()
+        self.assertEqual(len(pids), expected_count, pids)
+        deadline = time.monotonic() + 1.0   # a SIGKILLed orphan needs a moment
+        while time.monotonic() < deadline and any(alive(p) for p in pids.values()):
+            time.sleep(0.02)
+        self.assertEqual({n: p for n, p in pids.items() if alive(p)}, {},
+                         "processes left running")
+
+    # -- the script itself
+
+    def test_script_is_executable_python3(self):
+        self.assertTrue(os.access(SCRIPT, os.X_OK))
+        self.assertEqual(SCRIPT.read_text().splitlines()[0], "#!/usr/bin/python3")
+
+    def test_help(self):
+        rc, out, _ = self.cosph("--help")
+        self.assertEqual(rc, 0)
+        self.assertIn("run", out)
+        rc, out, _ = self.cosph("run", "--help")
+        self.assertEqual(rc, 0)
+        for text in ("--out", "--set", "--endpoint", "--quiet", "dam_break, sloshing"):
+            self.assertIn(text, out)
+
+    # -- successful runs
+
+    def test_single_process_success(self):
+        rc, out, err = self.run_case("--set", "fluid.dx=0.01")
+        self.assertEqual(rc, 0, err)
+        # Passed-through lines carry the prefix; progress lines are parsed, not echoed.
+        self.assertIn("[fluid] starting, case ", out)
+        self.assertIn("[fluid] warning: this is a fake solver", err)
+        self.assertNotIn("progress t=", out + err)
+        self.assertRegex(err, r"cosph: progress: t = 0\.\d+ / 1 s, \d+\.\d%")
+        # Summary names the outputs.
+        self.assertIn("simulated 1 s", out)
+        self.assertIn("timeseries.csv", out)
+        self.assertIn("fluid.xdmf", out)
+        # Reproducibility files.
+        self.assertEqual((self.out / "case.pbtxt").read_text(), "name: 'dam_break'\n")
+        command = (self.out / "command.txt").read_text()
+        self.assertIn("cosph-case plan ", command)
+        self.assertIn(f"cosph-fluid --case {self.tmp}/repo/cases/dam_break.pbtxt "
+                      f"--out {self.out} --set fluid.dx=0.01", command)
+        # One process: no endpoint.
+        self.assertEqual(self.fake_args("cosph-fluid"),
+                         ["--case", str(self.tmp / "repo/cases/dam_break.pbtxt"),
+                          "--out", str(self.out), "--set", "fluid.dx=0.01"])
+        self.assert_all_gone(1)
+
+    def test_three_processes_get_endpoint_and_sets(self):
+        rc, _, err = self.run_case("--set", "a=1", "--set", "b.c=x y",
+                                   FAKE_PLAN=THREE, FAKE_STEPS="4")
+        self.assertEqual(rc, 0, err)
+        for name in THREE.split():
+            args = self.fake_args(name)
+            self.assertEqual(args[args.index("--endpoint") + 1],
+                             f"ipc://{self.out}/coupler.sock")
+            self.assertEqual(args[4:8], ["--set", "a=1", "--set", "b.c=x y"])
+        self.assertEqual(json.loads((self.state / "plan.args").read_text())[2:],
+                         ["--set", "a=1", "--set", "b.c=x y"])
+        self.assert_all_gone(3)
+
+    def test_endpoint_option(self):
+        rc, _, err = self.run_case("--endpoint", "tcp://127.0.0.1:5555",
+                                   FAKE_PLAN="cosph-fluid cosph-solid", FAKE_STEPS="2")
+        self.assertEqual(rc, 0, err)
+        self.assertEqual(self.fake_args("cosph-solid")[-2:],
+                         ["--endpoint", "tcp://127.0.0.1:5555"])
+
+    def test_quiet_shows_no_progress(self):
+        rc, _, err = self.run_case("--quiet", FAKE_STEPS="4")
+        self.assertEqual(rc, 0, err)
+        self.assertNotIn("progress", err)
+        self.assertIn("[fluid] warning", err)   # other output still passes
+
+    def test_terminal_gets_updating_status_line(self):
+        master, slave = pty.openpty()
+        proc = subprocess.Popen([str(self.script), "run", "dam_break", "--out", str(self.out)],
+                                env={**self.env, "FAKE_STEPS": "8", "FAKE_INTERVAL": "0.08"},
+                                stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                                stderr=slave, start_new_session=True)
+        os.close(slave)
+        chunks = []
+        while True:   # read until the launcher closes the terminal (EIO)
+            try:
+                data = os.read(master, 4096)
+            except OSError:
+                break
+            if not data:
+                break
+            chunks.append(data)
+        os.close(master)
+        self.assertEqual(proc.wait(timeout=10), 0)
+        text = b"".join(chunks).decode()
+        self.assertRegex(text, r"\r\x1b\[Kt = [\d.]+ / 1 s, \d+\.\d%, .*steps/s")
+        self.assertNotIn("cosph: progress:", text)   # that is the non-terminal form
+
+    # -- case and argument errors
+
+    def test_case_by_name_with_extension_and_by_path(self):
+        rc, _, err = self.cosph("run", "sloshing.pbtxt", "--out", str(self.out))
+        self.assertEqual(rc, 0, err)
+        self.assertEqual((self.out / "case.pbtxt").read_text(), "name: 'sloshing'\n")
+        elsewhere = self.tmp / "my_case.pbtxt"
+        elsewhere.write_text("name: 'mine'\n")
+        rc, _, err = self.cosph("run", str(elsewhere), "--out", str(self.out))
+        self.assertEqual(rc, 0, err)
+        self.assertEqual((self.out / "case.pbtxt").read_text(), "name: 'mine'\n")
+
+    def test_unknown_case_lists_available(self):
+        rc, _, err = self.cosph("run", "dam_brake", "--out", str(self.out))
+        self.assertEqual(rc, 2)
+        self.assertIn("unknown case 'dam_brake'", err)
+        self.assertIn("available cases: dam_break, sloshing", err)
+        self.assertNotIn("README", err)
+        self.assertFalse((self.state / "plan.args").exists())
+        self.assertFalse(self.out.exists())
+
+    def test_bad_set_is_refused(self):
+        for bad in ("fluid.dx", "=3", "fluid.dx=", "two words=1"):
+            with self.subTest(bad=bad):
+                rc, _, err = self.run_case("--set", "ok=1", "--set", bad)
+                self.assertEqual(rc, 2)
+                self.assertIn(f"bad --set '{bad}'", err)
+                self.assertIn("FIELD=VALUE", err)
+        self.assertFalse((self.state / "plan.args").exists())
+
+    def test_missing_bin_folder(self):
+        rc, _, err = self.run_case(COSPH_BIN=str(self.tmp / "nowhere"))
+        self.assertEqual(rc, 2)
+        self.assertIn(str(self.tmp / "nowhere"), err)
+        self.assertIn("cmake --preset release && cmake --build --preset release -j2", err)
+        env_without = {k: v for k, v in self.env.items() if k != "COSPH_BIN"}
+        proc = subprocess.run([str(self.script), "run", "dam_break", "--out", str(self.out)],
+                              env=env_without, capture_output=True, text=True, timeout=10)
+        self.assertEqual(proc.returncode, 2)
+        self.assertIn(str(self.tmp / "repo/build/bin"), proc.stderr)
+
+    def test_planned_executable_missing(self):
+        rc, _, err = self.run_case(FAKE_PLAN="cosph-coupler cosph-magic")
+        self.assertEqual(rc, 2)
+        self.assertIn("cosph-magic not found", err)
+        self.assertEqual(self.recorded_pids(), {})
+
+    def test_plan_error_passes_through(self):
+        message = "dam_break.pbtxt: field fluid.dx: must be positive, got -1"
+        rc, out, err = self.run_case(FAKE_PLAN_ERROR=message, FAKE_PLAN_CODE="4")
+        self.assertEqual(rc, 4)
+        self.assertEqual(err, message + "\n")   # verbatim, nothing added
+        self.assertEqual(out, "")
+        self.assertTrue((self.state / "plan.args").exists())
+        self.assertEqual(self.recorded_pids(), {})   # nothing started
+
+    # -- failures
+
+    def test_one_of_three_fails_others_are_stopped(self):
+        start = time.monotonic()
+        rc, _, err = self.run_case(FAKE_PLAN=THREE, FAKE_FAIL="cosph-solid",
+                                   FAKE_HANG="cosph-coupler,cosph-fluid",
+                                   FAKE_GRANDCHILD=ALL)
+        self.assertLess(time.monotonic() - start, 4.0)
+        self.assertEqual(rc, 3)
+        self.assertIn("cosph: cosph-solid failed (exit code 3): error: solid diverged", err)
+        self.assertNotIn("cosph-fluid failed", err)   # stopped by us, not a failure
+        self.assert_all_gone(6)   # three fakes and the sleep each one started
+
+    def test_killed_by_signal(self):
+        rc, _, err = self.run_case(FAKE_FAIL="cosph-fluid", FAKE_FAIL_SIGNAL="9")
+        self.assertEqual(rc, 1)
+        self.assertIn("cosph: cosph-fluid failed (killed by signal 9 (SIGKILL)): "
+                      "error: fluid diverged", err)
+
+    def test_sigterm_ignored_escalates_to_sigkill(self):
+        start = time.monotonic()
+        rc, _, err = self.run_case(FAKE_PLAN="cosph-fluid cosph-solid",
+                                   FAKE_FAIL="cosph-solid", FAKE_HANG="cosph-fluid",
+                                   FAKE_IGNORE_TERM="cosph-fluid", COSPH_TERM_GRACE_S="0.5")
+        self.assertEqual(rc, 3)
+        self.assertIn("cosph-fluid did not stop, killing it", err)
+        self.assertLess(time.monotonic() - start, 4.0)
+        self.assert_all_gone(2)
+
+    def test_straggler_is_stopped(self):
+        rc, _, err = self.run_case(FAKE_PLAN="cosph-fluid cosph-solid", FAKE_STEPS="3",
+                                   FAKE_HANG="cosph-solid", COSPH_STRAGGLER_S="0.5")
+        self.assertEqual(rc, 1)
+        self.assertIn("cosph-solid failed (still running 0.5 s after cosph-fluid finished)",
+                      err)
+        self.assert_all_gone(2)
+
+    # -- signals to the launcher
+
+    def interrupt(self, sig, **env):
+        proc = self.launch("run", "dam_break", "--out", str(self.out), FAKE_PLAN=THREE,
+                           FAKE_HANG=ALL, FAKE_GRANDCHILD=ALL, **env)
+        try:
+            self.wait_for_pids(THREE.split())
+            time.sleep(0.2)
+            start = time.monotonic()
+            os.kill(proc.pid, sig)   # the launcher only, as a terminal's Ctrl-C would
+            out, err = proc.communicate(timeout=8)
+        finally:
+            if proc.poll() is None:
+                os.killpg(proc.pid, signal.SIGKILL)
+                proc.communicate()
+        return proc.returncode, time.monotonic() - start, out, err
+
+    def test_sigint_stops_all_children(self):
+        rc, elapsed, out, err = self.interrupt(signal.SIGINT)
+        self.assertEqual(rc, 130, err)
+        self.assertLess(elapsed, 3.0)
+        for name in THREE.split():
+            # SIGINT (not SIGTERM/SIGKILL) reached each, so it wrote its snapshot.
+            self.assertTrue((self.state / f"{name}.sigint").exists(), name)
+        self.assertIn("[fluid] writing final snapshot", out)
+        self.assert_all_gone(6)
+
+    def test_sigterm_to_launcher_forwards_sigint(self):
+        rc, _, _, err = self.interrupt(signal.SIGTERM)
+        self.assertEqual(rc, 130, err)
+        self.assertTrue((self.state / "cosph-solid.sigint").exists())
+        self.assert_all_gone(6)
+
+    def test_child_ignoring_sigint_is_killed(self):
+        rc, elapsed, _, err = self.interrupt(signal.SIGINT, FAKE_IGNORE_INT="cosph-coupler",
+                                             COSPH_INT_GRACE_S="0.5")
+        self.assertEqual(rc, 130, err)
+        self.assertIn("cosph-coupler did not stop, killing it", err)
+        self.assertLess(elapsed, 3.0)
+        self.assert_all_gone(6)
+
+    def test_launcher_killed_hard_leaves_no_children(self):
+        # SIGKILL cannot be handled; the kernel's parent-death signal stops the
+        # children instead of leaving them orphaned. The fakes stay silent
+        # (FAKE_INTERVAL), so a write to the dead launcher's pipe cannot be
+        # what stops them.
+        proc = self.launch("run", "dam_break", "--out", str(self.out), FAKE_PLAN=THREE,
+                           FAKE_HANG=ALL, FAKE_INTERVAL="30")
+        try:
+            self.wait_for_pids(THREE.split())
+            os.kill(proc.pid, signal.SIGKILL)
+            proc.communicate(timeout=5)
+        finally:
+            if proc.poll() is None:
+                os.killpg(proc.pid, signal.SIGKILL)
+                proc.communicate()
+        self.assert_all_gone(3)
+
+
+if __name__ == "__main__":
+    unittest.main()
