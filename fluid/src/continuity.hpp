@@ -17,12 +17,14 @@ inline double continuity_pair(double rho_i, double V_j, const Vec2& v_ij, const 
   return rho_i * V_j * v_ij.dot(grad_W_ij);
 }
 
-// Without the factor delta h c0, which is the same for every pair.
-inline double density_diffusion_pair(double rho_i, double rho_j, const Vec2& x_ij, double r_ij,
+// One pair's share of the diffusion sum, without the factor delta h c0 that is
+// the same for every pair. With grad_i W_ij = F_ij x_ij (F_ij = W'(r)/r), the
+// first part of psi_ij . grad_i W_ij is 2 (rho_j - rho_i) (x_j - x_i) . x_ij F_ij
+// / r_ij^2 = -2 (rho_j - rho_i) F_ij: no square root, no division.
+inline double density_diffusion_pair(double rho_i, double rho_j, double F_ij,
                                      const Vec2& grad_rho_i, const Vec2& grad_rho_j, double V_j,
                                      const Vec2& grad_W_ij) {
-  const Vec2 psi_ij = (2.0 * (rho_j - rho_i) / (r_ij * r_ij)) * (-x_ij) - (grad_rho_i + grad_rho_j);
-  return V_j * psi_ij.dot(grad_W_ij);
+  return V_j * (-2.0 * (rho_j - rho_i) * F_ij - (grad_rho_i + grad_rho_j).dot(grad_W_ij));
 }
 
 }  // namespace cosph::fluid

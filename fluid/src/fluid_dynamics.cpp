@@ -21,12 +21,14 @@ double support_squared(const FluidParameters& par) {
 }
 }  // namespace
 
-void compute_continuity_and_gradients(FluidParticles& P, const sph::CellGrid& grid,
+void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourList& pairs,
                                       const FluidParameters& par) {
   const long n = static_cast<long>(P.size());
-  const double h = par.h, support2 = support_squared(par);
-  const double diffusion = par.delta * h * par.c0;
+  const double diffusion = par.delta * par.h * par.c0;
   P.grad_rho_next.resize(P.size());
+  P.volume.resize(P.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) P.volume[i] = P.m[i] / P.rho[i];
 
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
@@ -36,24 +38,22 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::CellGrid& gr
     Mat2 M = Mat2::Zero(), grad_v_raw = Mat2::Zero();
     Vec2 grad_rho_raw = Vec2::Zero();
     double drho_i = 0.0, diffusion_i = 0.0;
-    grid.for_each_candidate_range(x_i, [&](int begin, int end) {
-      for (int j = begin; j < end; ++j) {
-        const Vec2 x_ij = x_i - P.x[j];
-        const double r2 = x_ij.squaredNorm();
-        if (r2 >= support2 || j == i) continue;
-        const double r_ij = std::sqrt(r2);
-        const Vec2 grad_W_ij = kernel::grad_W(x_ij, r_ij, h);
-        const double rho_j = P.rho[j], V_j = P.m[j] / rho_j;
-        const Vec2 v_ij = v_i - P.v[j];
-        drho_i += continuity_pair(rho_i, V_j, v_ij, grad_W_ij);
-        if (!P.is_water(j)) continue;
-        diffusion_i += density_diffusion_pair(rho_i, rho_j, x_ij, r_ij, grad_rho_i, P.grad_rho[j],
-                                              V_j, grad_W_ij);
-        M += sph::renormalisation_term(V_j, grad_W_ij, x_ij);
-        grad_rho_raw += (V_j * (rho_j - rho_i)) * grad_W_ij;
-        grad_v_raw += (V_j * -v_ij) * grad_W_ij.transpose();
-      }
-    });
+    const auto neighbours = pairs.neighbours(i);
+    const auto F = pairs.gradient_factors(i);
+    for (std::size_t k = 0; k < neighbours.size(); ++k) {
+      const int j = neighbours[k];
+      const Vec2 x_ij = x_i - P.x[j];
+      const Vec2 grad_W_ij = F[k] * x_ij;
+      const double rho_j = P.rho[j], V_j = P.volume[j];
+      const Vec2 v_ij = v_i - P.v[j];
+      drho_i += continuity_pair(rho_i, V_j, v_ij, grad_W_ij);
+      if (!P.is_water(j)) continue;
+      diffusion_i +=
+          density_diffusion_pair(rho_i, rho_j, F[k], grad_rho_i, P.grad_rho[j], V_j, grad_W_ij);
+      M += sph::renormalisation_term(V_j, grad_W_ij, x_ij);
+      grad_rho_raw += (V_j * (rho_j - rho_i)) * grad_W_ij;
+      grad_v_raw += (V_j * -v_ij) * grad_W_ij.transpose();
+    }
     P.drho[i] = drho_i + diffusion * diffusion_i;
     const Mat2 L = sph::renormalisation_matrix(M);
     P.grad_rho_next[i] = L * grad_rho_raw;
@@ -87,10 +87,9 @@ void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid,
   }
 }
 
-void compute_accelerations(FluidParticles& P, const sph::CellGrid& grid,
+void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
                            const FluidParameters& par) {
   const long n = static_cast<long>(P.size());
-  const double h = par.h, support2 = support_squared(par);
 
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
@@ -98,21 +97,18 @@ void compute_accelerations(FluidParticles& P, const sph::CellGrid& grid,
     const Vec2 x_i = P.x[i], v_i = P.v[i];
     const double rho_i = P.rho[i];
     const Mat2 sigma_i = -P.p[i] * Mat2::Identity() + P.tau[i];
-    Vec2 a_i = par.run.gravity;
-    grid.for_each_candidate_range(x_i, [&](int begin, int end) {
-      for (int j = begin; j < end; ++j) {
-        const Vec2 x_ij = x_i - P.x[j];
-        const double r2 = x_ij.squaredNorm();
-        if (r2 >= support2 || j == i) continue;
-        const double r_ij = std::sqrt(r2);
-        const Vec2 grad_W_ij = kernel::grad_W(x_ij, r_ij, h);
-        const double rho_j = P.rho[j];
-        const Mat2 sigma_j = -P.p[j] * Mat2::Identity() + P.tau[j];
-        const double Pi_ij = sph::artificial_viscosity(x_ij, v_i - P.v[j], h, par.c0,
-                                                       0.5 * (rho_i + rho_j), par.A, par.B);
-        a_i += sph::momentum_pair(P.m[j], sigma_i, sigma_j, rho_i, rho_j, Pi_ij, grad_W_ij);
-      }
-    });
+    Vec2 a_i = par.run.gravity + P.external_a[i];
+    const auto neighbours = pairs.neighbours(i);
+    const auto F = pairs.gradient_factors(i);
+    for (std::size_t k = 0; k < neighbours.size(); ++k) {
+      const int j = neighbours[k];
+      const Vec2 x_ij = x_i - P.x[j];
+      const double rho_j = P.rho[j];
+      const Mat2 sigma_j = -P.p[j] * Mat2::Identity() + P.tau[j];
+      const double Pi_ij = sph::artificial_viscosity(x_ij, v_i - P.v[j], par.h, par.c0,
+                                                     0.5 * (rho_i + rho_j), par.A, par.B);
+      a_i += sph::momentum_pair(P.m[j], sigma_i, sigma_j, rho_i, rho_j, Pi_ij, F[k] * x_ij);
+    }
     P.a[i] = a_i;
   }
 }

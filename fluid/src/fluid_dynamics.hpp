@@ -12,19 +12,21 @@
 #include "fluid_parameters.hpp"
 #include "fluid_particles.hpp"
 #include "sphcore/cell_grid.hpp"
+#include "sphcore/neighbour_list.hpp"
 
 namespace cosph::fluid {
 
 // Reads grad_rho (of the previous step: the diffusion's correction term lags
 // one step, which keeps this to one pass) and writes drho, tau and the new
 // grad_rho.
-void compute_continuity_and_gradients(FluidParticles& particles, const sph::CellGrid& grid,
+void compute_continuity_and_gradients(FluidParticles& particles, const sph::NeighbourList& pairs,
                                       const FluidParameters& parameters);
 
 void compute_wall_pressure(FluidParticles& particles, const sph::CellGrid& grid,
                            const FluidParameters& parameters, const TaitEquationOfState& eos);
 
-void compute_accelerations(FluidParticles& particles, const sph::CellGrid& grid,
+// Adds external_a (the coupling's share, zero when alone) and gravity.
+void compute_accelerations(FluidParticles& particles, const sph::NeighbourList& pairs,
                            const FluidParameters& parameters);
 
 }  // namespace cosph::fluid

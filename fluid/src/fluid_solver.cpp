@@ -17,7 +17,7 @@ FluidSolver::FluidSolver(const sph::CaseFile& case_file, const FluidParameters& 
       eos_(parameters.rho0, parameters.c0),
       particles_(build_fluid_scene(case_file, parameters)) {
   sort_and_find_neighbours();
-  compute_continuity_and_gradients(particles_, grid_, parameters_);  // only for grad_rho
+  compute_continuity_and_gradients(particles_, pairs_, parameters_);  // only for grad_rho
   update_pressure_and_accelerations();
 }
 
@@ -25,6 +25,7 @@ void FluidSolver::sort_and_find_neighbours() {
   FluidParticles& P = particles_;
   grid_.build(P.x, sph::kernel::kSupport * parameters_.h);
   sph::permute(grid_.order(), P.id, P.kind, P.x, P.v, P.rho, P.m, P.grad_rho);
+  pairs_.build(grid_, P.x, parameters_.h, [&P](long i) { return P.is_water(i); });
 }
 
 void FluidSolver::update_pressure_and_accelerations() {
@@ -34,7 +35,7 @@ void FluidSolver::update_pressure_and_accelerations() {
   for (long i = 0; i < n; ++i)
     if (P.is_water(i)) P.p[i] = eos_.pressure(P.rho[i]);
   compute_wall_pressure(P, grid_, parameters_, eos_);
-  compute_accelerations(P, grid_, parameters_);
+  compute_accelerations(P, pairs_, parameters_);
 }
 
 sph::StepLimits FluidSolver::step_limits() const {
@@ -60,7 +61,7 @@ void FluidSolver::step(double dt) {
     P.x[i] += dt * P.v[i];
   }
   sort_and_find_neighbours();
-  compute_continuity_and_gradients(P, grid_, parameters_);
+  compute_continuity_and_gradients(P, pairs_, parameters_);
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i)
     if (P.is_water(i)) P.rho[i] += dt * P.drho[i];

@@ -17,6 +17,7 @@
 #include "gauges.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/cell_grid.hpp"
+#include "sphcore/neighbour_list.hpp"
 #include "sphcore/snapshot_writer.hpp"
 #include "sphcore/time_step.hpp"
 
@@ -49,6 +50,7 @@ class FluidSolver {
   TaitEquationOfState eos_;
   FluidParticles particles_;
   sph::CellGrid grid_;
+  sph::NeighbourList pairs_;
   double time_ = 0.0;
   long steps_ = 0;
 };

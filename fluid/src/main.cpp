@@ -22,11 +22,11 @@ int run_fluid(int argc, char** argv) {
   if (case_file.config.has_solid() || !args.endpoint.empty())
     throw sph::ConfigError(args.case_path +
                            ": solid: this case is coupled; coupled runs are not built yet");
-  if (parameters.run.threads > 0) omp_set_num_threads(parameters.run.threads);
   sph::make_output_dir(args.out_dir);
   sph::install_stop_handlers();
 
   FluidSolver solver(case_file, parameters);
+  omp_set_num_threads(sph::choose_threads(parameters.run.threads, solver.particles().size()));
   std::cout << "cosph-fluid: " << solver.gauges().water_particles << " water and "
             << solver.particles().size() - solver.gauges().water_particles
             << " wall particles, dx = " << parameters.dx << " m, h = " << parameters.h

@@ -15,12 +15,13 @@ void CellGrid::build(std::span<const Vec2> x, double cell_size) {
   if (n > 0) {
     lo = hi = x[0];
     for (const Vec2& p : x) {
+      // Checked per particle: min and max pass a NaN by (NaN < a is false).
+      if (!p.allFinite())
+        throw std::runtime_error("neighbour search: a particle position is not finite");
       lo = lo.cwiseMin(p);
       hi = hi.cwiseMax(p);
     }
   }
-  if (!lo.allFinite() || !hi.allFinite())
-    throw std::runtime_error("neighbour search: a particle position is not finite");
   origin_ = lo;
   nx_ = cell_coordinate(hi.x(), lo.x()) + 1;
   ny_ = cell_coordinate(hi.y(), lo.y()) + 1;

@@ -24,3 +24,18 @@ RunParameters read_run_parameters(const CaseFile& case_file) {
 }
 
 }  // namespace sph
+
+#include <omp.h>
+
+#include <algorithm>
+
+namespace sph {
+
+int choose_threads(int requested, std::size_t particles) {
+  if (requested > 0) return requested;
+  constexpr std::size_t kParticlesPerThread = 4000;
+  const int useful = static_cast<int>(std::max<std::size_t>(1, particles / kParticlesPerThread));
+  return std::min(useful, omp_get_max_threads());
+}
+
+}  // namespace sph

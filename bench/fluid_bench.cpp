@@ -1,0 +1,70 @@
+// cosph-bench: particle-steps per second of the fluid solver alone, on the
+// dam break at three resolutions, on one thread and on all. Not a test: run
+//   build/bin/cosph-bench [--steps N] [--quick]
+// It prints a table; scripts/benchmark.py turns it into docs/results/benchmark.md.
+#include <omp.h>
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "fluid_parameters.hpp"
+#include "fluid_solver.hpp"
+#include "sphcore/case_file.hpp"
+#include "sphcore/solver_cli.hpp"
+
+namespace {
+
+using cosph::fluid::FluidSolver;
+
+struct Measurement {
+  long particles;
+  int threads;
+  double seconds_per_step;
+};
+
+Measurement time_fluid(const std::string& case_path, double spacing, int threads, int steps) {
+  omp_set_num_threads(threads);
+  const sph::CaseFile case_file =
+      sph::load_case(case_path, {"fluid.spacing=" + std::to_string(spacing)});
+  FluidSolver solver(case_file, cosph::fluid::read_fluid_parameters(case_file));
+  // Warm up (first touch, the collapse starting), then time a fixed number of steps.
+  for (int s = 0; s < steps / 10 + 1; ++s) solver.step(solver.step_limits().smallest());
+  const auto start = std::chrono::steady_clock::now();
+  for (int s = 0; s < steps; ++s) solver.step(solver.step_limits().smallest());
+  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+  return {static_cast<long>(solver.particles().size()), threads, elapsed.count() / steps};
+}
+
+int bench(int argc, char** argv) {
+  int steps = 200;
+  bool quick = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string option = argv[i];
+    if (option == "--steps" && i + 1 < argc) steps = std::stoi(argv[++i]);
+    else if (option == "--quick") quick = true;
+    else throw sph::ConfigError("usage: cosph-bench [--steps N] [--quick]");
+  }
+  const std::string case_path = std::string(COSPH_SOURCE_DIR) + "/cases/dam_break.pbtxt";
+  // Spacings giving about 650, 10 000 and 50 000 water particles.
+  std::vector<double> spacings{0.008, 0.002, 0.0009};
+  if (quick) spacings.pop_back();
+  const int all_threads = omp_get_num_procs();
+  std::printf("%-6s %10s %8s %14s %22s\n", "solver", "particles", "threads", "ms/step",
+              "particle-steps/s");
+  for (double spacing : spacings)
+    for (int threads : {1, all_threads}) {
+      const Measurement m = time_fluid(case_path, spacing, threads, steps);
+      std::printf("%-6s %10ld %8d %14.4f %22.4g\n", "fluid", m.particles, m.threads,
+                  1e3 * m.seconds_per_step, static_cast<double>(m.particles) / m.seconds_per_step);
+      std::fflush(stdout);
+    }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return sph::run_guarded("cosph-bench", [&] { return bench(argc, argv); });
+}

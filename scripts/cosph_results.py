@@ -1,0 +1,72 @@
+"""Shared helpers of the validation scripts: reading cosph and reference CSVs,
+running a case through the launcher, error norms, writing result tables.
+
+Run the scripts with /usr/bin/python3 (Debian's numpy, matplotlib, h5py).
+"""
+import os
+import subprocess
+import sys
+import time
+
+import numpy as np
+
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+REFERENCE = os.path.join(os.path.dirname(REPO), "shared", "reference")
+FIGURES = os.path.join(REPO, "docs", "figures")
+RESULTS = os.path.join(REPO, "docs", "results")
+
+
+def read_csv(path):
+    """Columns of a CSV with '#' comments and one header row, keyed by name.
+
+    cosph headers carry units ('t [s]'); the key is the name before the unit.
+    """
+    with open(path) as f:
+        lines = [line for line in f if not line.startswith("#") and line.strip()]
+    names = [name.split(" [")[0].strip() for name in lines[0].strip().split(",")]
+    data = np.array([[float(v) for v in line.split(",")] for line in lines[1:]], ndmin=2)
+    return {name: data[:, k] for k, name in enumerate(names)}
+
+
+def reference(name):
+    return read_csv(os.path.join(REFERENCE, name))
+
+
+def run_case(case, out_dir, settings=(), timeout=3600):
+    """Runs a case with the launcher; returns the wall time in seconds."""
+    command = [os.path.join(REPO, "coupler", "cosph"), "run", case, "--out", out_dir, "--quiet"]
+    for setting in settings:
+        command += ["--set", setting]
+    start = time.monotonic()
+    result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            timeout=timeout)
+    elapsed = time.monotonic() - start
+    if result.returncode != 0:
+        sys.stderr.write(result.stdout)
+        raise RuntimeError(f"{' '.join(command)} failed with exit code {result.returncode}")
+    return elapsed
+
+
+def rms_relative_error(t_model, y_model, t_ref, y_ref):
+    """RMS and max of (model - ref) / ref at the reference times (model interpolated)."""
+    relative = (np.interp(t_ref, t_model, y_model) - y_ref) / y_ref
+    return float(np.sqrt(np.mean(relative ** 2))), float(np.max(np.abs(relative)))
+
+
+def rms_error(t_model, y_model, t_ref, y_ref):
+    """RMS of model - ref at the reference times, in the data's unit."""
+    difference = np.interp(t_ref, t_model, y_model) - y_ref
+    return float(np.sqrt(np.mean(difference ** 2)))
+
+
+def write_table(name, header, rows, preamble=""):
+    """docs/results/NAME.md: a markdown table the README includes."""
+    os.makedirs(RESULTS, exist_ok=True)
+    lines = [preamble.strip(), ""] if preamble else []
+    lines.append("| " + " | ".join(header) + " |")
+    lines.append("|" + "---|" * len(header))
+    lines += ["| " + " | ".join(str(cell) for cell in row) + " |" for row in rows]
+    path = os.path.join(RESULTS, name + ".md")
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+    return path
