@@ -8,13 +8,13 @@ namespace cosph::fluid {
 
 struct FluidParameters {
   sph::RunParameters run;
-  double dx;     // initial spacing
-  double h;      // smoothing length
-  double rho0;   // reference density
-  double mu;     // dynamic viscosity
-  double c0;     // artificial sound speed
-  double delta;  // delta-SPH coefficient; 0 = off
-  double A, B;   // Monaghan artificial viscosity
+  double dx;                    // initial spacing
+  double h;                     // smoothing length
+  double rho0;                  // reference density
+  double mu;                    // dynamic viscosity
+  double c0;                    // artificial sound speed
+  double delta;                 // delta-SPH coefficient; 0 = off
+  double A, B;                  // Monaghan artificial viscosity
   double left_wall_x, floor_y;  // gauges
 };
 

@@ -30,9 +30,9 @@ struct FluidParticles {
   std::vector<Mat2> tau;            // viscous stress
   std::vector<Vec2> grad_rho_next;  // being computed
   std::vector<double> volume;       // m / rho, once per particle rather than per pair
-  std::vector<Vec2> a;         // dv/dt
-  std::vector<double> drho;    // drho/dt
-  std::vector<Vec2> external_a;  // acceleration from outside the fluid (coupling)
+  std::vector<Vec2> a;              // dv/dt
+  std::vector<double> drho;         // drho/dt
+  std::vector<Vec2> external_a;     // acceleration from outside the fluid (coupling)
 
   std::size_t size() const { return x.size(); }
   bool is_water(std::size_t i) const { return kind[i] == Kind::water; }

@@ -23,7 +23,7 @@ FluidSolver::FluidSolver(const sph::CaseFile& case_file, const FluidParameters& 
 
 void FluidSolver::sort_and_find_neighbours() {
   FluidParticles& P = particles_;
-  grid_.build(P.x, sph::kernel::kSupport * parameters_.h);
+  grid_.build(P.x, sph::kernel::kSupport * parameters_.h, 2);
   sph::permute(grid_.order(), P.id, P.kind, P.x, P.v, P.rho, P.m, P.grad_rho);
   pairs_.build(grid_, P.x, parameters_.h, [&P](long i) { return P.is_water(i); });
 }
@@ -89,8 +89,8 @@ void FluidSolver::check_state() const {
     if (reason == nullptr) continue;
     std::ostringstream message;
     message << "water particle " << P.id[i] << " at (" << P.x[i].x() << ", " << P.x[i].y()
-            << ") m, t = " << time_ << " s, step " << steps_ << ": " << reason
-            << " (speed " << P.v[i].norm() << " m/s, density " << P.rho[i]
+            << ") m, t = " << time_ << " s, step " << steps_ << ": " << reason << " (speed "
+            << P.v[i].norm() << " m/s, density " << P.rho[i]
             << " kg/m^3); the run has blown up: try a smaller run.cfl";
     throw sph::RunawayError(message.str());
   }

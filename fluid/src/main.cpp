@@ -32,15 +32,18 @@ int run_fluid(int argc, char** argv) {
             << " wall particles, dx = " << parameters.dx << " m, h = " << parameters.h
             << " m, c0 = " << parameters.c0 << " m/s, " << omp_get_max_threads() << " threads"
             << std::endl;
-  sph::StandaloneRun<FluidSolver> run(
-      solver, parameters.run, args.out_dir, "fluid",
-      {{"front", "m"}, {"height", "m"}, {"kinetic_energy", "J/m"}, {"max_speed", "m/s"},
-       {"water_particles", "1"}},
-      [](const FluidSolver& s) {
-        const auto g = s.gauges();
-        return std::vector<double>{g.front, g.height, g.kinetic_energy, g.max_speed,
-                                   static_cast<double>(g.water_particles)};
-      });
+  sph::StandaloneRun<FluidSolver> run(solver, parameters.run, args.out_dir, "fluid",
+                                      {{"front", "m"},
+                                       {"height", "m"},
+                                       {"kinetic_energy", "J/m"},
+                                       {"max_speed", "m/s"},
+                                       {"water_particles", "1"}},
+                                      [](const FluidSolver& s) {
+                                        const auto g = s.gauges();
+                                        return std::vector<double>{
+                                            g.front, g.height, g.kinetic_energy, g.max_speed,
+                                            static_cast<double>(g.water_particles)};
+                                      });
   return run.run();
 }
 

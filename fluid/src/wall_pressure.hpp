@@ -12,8 +12,8 @@ namespace cosph::fluid {
 using sph::Vec2;
 
 struct WallPressureSum {
-  double weight = 0.0;  // sum_f W_wf
-  double pressure = 0.0;  // sum_f P_f W_wf
+  double weight = 0.0;         // sum_f W_wf
+  double pressure = 0.0;       // sum_f P_f W_wf
   Vec2 moment = Vec2::Zero();  // sum_f rho_f (x_w - x_f) W_wf
 
   void add(double P_f, double rho_f, const Vec2& x_wf, double W_wf) {

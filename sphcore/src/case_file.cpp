@@ -17,8 +17,8 @@ class FirstErrorCollector : public pb::io::ErrorCollector {
   explicit FirstErrorCollector(std::string path) : path_(std::move(path)) {}
   void AddError(int line, pb::io::ColumnNumber column, const std::string& message) override {
     if (!first_error_.empty()) return;
-    first_error_ = path_ + ":" + std::to_string(line + 1) + ":" + std::to_string(column + 1) +
-                   ": " + message;
+    first_error_ =
+        path_ + ":" + std::to_string(line + 1) + ":" + std::to_string(column + 1) + ": " + message;
   }
   const std::string& first_error() const { return first_error_; }
 
@@ -102,7 +102,8 @@ void apply_override(CaseFile& case_file, const std::string& assignment) {
                                   : reflection->MutableMessage(message, field);
         target->Clear();
         if (!pb::TextFormat::ParseFromString(value, target))
-          throw ConfigError(where + "cannot read '" + value + "' as " + field->message_type()->name());
+          throw ConfigError(where + "cannot read '" + value + "' as " +
+                            field->message_type()->name());
         return;
       }
       if (field->is_repeated())

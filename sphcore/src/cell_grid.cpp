@@ -7,8 +7,10 @@
 
 namespace sph {
 
-void CellGrid::build(std::span<const Vec2> x, double cell_size) {
+void CellGrid::build(std::span<const Vec2> x, double range, int subdivisions) {
   const std::size_t n = x.size();
+  reach_ = std::max(subdivisions, 1);
+  const double cell_size = range / static_cast<double>(reach_);
   cell_size_ = cell_size;
   inverse_cell_size_ = 1.0 / cell_size;
   Vec2 lo = Vec2::Constant(0.0), hi = Vec2::Constant(0.0);

@@ -7,7 +7,9 @@
 namespace sph {
 namespace {
 std::atomic<bool> stop_flag{false};
-extern "C" void on_stop_signal(int) { stop_flag.store(true); }
+extern "C" void on_stop_signal(int) {
+  stop_flag.store(true);
+}
 }  // namespace
 
 void install_stop_handlers() {
@@ -15,7 +17,9 @@ void install_stop_handlers() {
   std::signal(SIGTERM, on_stop_signal);
 }
 
-bool stop_requested() { return stop_flag.load(); }
+bool stop_requested() {
+  return stop_flag.load();
+}
 
 void ProgressReporter::report(double t, long step, double dt, bool force) {
   const auto now = std::chrono::steady_clock::now();

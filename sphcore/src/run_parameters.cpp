@@ -4,7 +4,8 @@ namespace sph {
 
 RunParameters read_run_parameters(const CaseFile& case_file) {
   const auto& run = case_file.config.run();
-  require(case_file.config.has_run(), case_file, "run", "missing (it sets end_time and the outputs)");
+  require(case_file.config.has_run(), case_file, "run",
+          "missing (it sets end_time and the outputs)");
   require(run.end_time() > 0.0, case_file, "run.end_time",
           "must be positive, got " + format_number(run.end_time()) + " s");
   require(run.output_interval() >= 0.0, case_file, "run.output_interval", "must not be negative");

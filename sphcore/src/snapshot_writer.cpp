@@ -37,7 +37,8 @@ std::string SnapshotWriter::write(const Snapshot& snapshot, double time) {
   const std::string file = name_ + "_" + number + ".h5";
   write_file(snapshot, time, out_dir_ + "/" + file);
   Entry entry{file, time, snapshot.size(), {}};
-  for (const auto& field : snapshot.fields()) entry.fields.emplace_back(field.name, field.components);
+  for (const auto& field : snapshot.fields())
+    entry.fields.emplace_back(field.name, field.components);
   entries_.push_back(std::move(entry));
   write_index();
   return out_dir_ + "/" + file;
@@ -56,8 +57,8 @@ void write_dataset(hid_t file, const std::string& name, const std::vector<double
                    std::size_t rows, int components, const std::string& path) {
   const hsize_t dims[2] = {rows, static_cast<hsize_t>(components)};
   const hid_t space = H5Screate_simple(components == 1 ? 1 : 2, dims, nullptr);
-  const hid_t set = H5Dcreate2(file, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT,
-                               H5P_DEFAULT, H5P_DEFAULT);
+  const hid_t set =
+      H5Dcreate2(file, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   const herr_t status =
       set < 0 ? -1 : H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
   if (set >= 0) H5Dclose(set);
@@ -98,7 +99,8 @@ void SnapshotWriter::write_index() const {
     std::ofstream out(partial);
     out.precision(12);
     out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n <Domain>\n"
-        << "  <Grid Name=\"" << name_ << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+        << "  <Grid Name=\"" << name_
+        << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
     for (const Entry& e : entries_) {
       auto item = [&](const std::string& dataset, int components) {
         out << "      <DataItem Dimensions=\"" << e.size;

@@ -11,13 +11,14 @@ namespace sph {
 
 SolverArgs parse_solver_args(int argc, char** argv, const std::string& program,
                              const std::string& summary) {
-  const std::string usage = "usage: " + program +
-                            " --case FILE --out DIR [--set FIELD=VALUE ...] [--endpoint E]";
+  const std::string usage =
+      "usage: " + program + " --case FILE --out DIR [--set FIELD=VALUE ...] [--endpoint E]";
   SolverArgs args;
   for (int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
     if (option == "--help" || option == "-h") {
-      std::cout << usage << "\n\n" << summary << "\n\n"
+      std::cout << usage << "\n\n"
+                << summary << "\n\n"
                 << "  --case FILE          case file (protobuf text format, proto/case.proto)\n"
                 << "  --out DIR            output folder (created if missing)\n"
                 << "  --set FIELD=VALUE    override a case field, e.g. fluid.spacing=0.004\n"
@@ -27,11 +28,16 @@ SolverArgs parse_solver_args(int argc, char** argv, const std::string& program,
     }
     if (i + 1 >= argc) throw ConfigError(program + ": " + option + " needs a value\n" + usage);
     const std::string value = argv[++i];
-    if (option == "--case") args.case_path = value;
-    else if (option == "--out") args.out_dir = value;
-    else if (option == "--set") args.overrides.push_back(value);
-    else if (option == "--endpoint") args.endpoint = value;
-    else throw ConfigError(program + ": unknown option " + option + "\n" + usage);
+    if (option == "--case")
+      args.case_path = value;
+    else if (option == "--out")
+      args.out_dir = value;
+    else if (option == "--set")
+      args.overrides.push_back(value);
+    else if (option == "--endpoint")
+      args.endpoint = value;
+    else
+      throw ConfigError(program + ": unknown option " + option + "\n" + usage);
   }
   if (args.case_path.empty() || args.out_dir.empty())
     throw ConfigError(program + ": --case and --out are required\n" + usage);

@@ -16,8 +16,8 @@ TimeSeriesWriter::TimeSeriesWriter(const std::string& path, std::vector<Column> 
 
 void TimeSeriesWriter::write_row(std::span<const double> values) {
   if (values.size() != columns_.size())
-    throw std::logic_error(path_ + ": row has " + std::to_string(values.size()) +
-                           " values for " + std::to_string(columns_.size()) + " columns");
+    throw std::logic_error(path_ + ": row has " + std::to_string(values.size()) + " values for " +
+                           std::to_string(columns_.size()) + " columns");
   for (std::size_t c = 0; c < values.size(); ++c) out_ << (c ? "," : "") << values[c];
   out_ << '\n';
   out_.flush();

@@ -60,8 +60,7 @@ class StandaloneRun {
       try {
         solver_.step(dt);
       } catch (const RunawayError& error) {
-        const std::string path =
-            snapshots_.write_extra(*last_good_, last_good_time_, "last_good");
+        const std::string path = snapshots_.write_extra(*last_good_, last_good_time_, "last_good");
         throw RunawayError(std::string(error.what()) + ". Last good state (t = " +
                            std::to_string(last_good_time_) + " s) kept in " + path);
       }
