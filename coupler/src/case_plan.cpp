@@ -10,6 +10,7 @@
 
 #include "fluid_parameters.hpp"
 #include "fluid_scene.hpp"
+#include "solid_parameters.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/run_parameters.hpp"
 #include "sphcore/solver_cli.hpp"
@@ -37,6 +38,7 @@ int plan(int argc, char** argv) {
     const auto parameters = cosph::fluid::read_fluid_parameters(case_file);
     cosph::fluid::check_walls_close(case_file, parameters);
   }
+  if (solid) cosph::solid::read_solid_parameters(case_file);
   if (fluid && solid) {
     std::cout << "cosph-coupler cosph-fluid cosph-solid\n";
   } else {

@@ -112,7 +112,7 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
     const Vec2 x_i = P.x[i], v_i = P.v[i];
     const double rho_i = P.rho[i];
     const Mat2 sigma_i = -P.p[i] * Mat2::Identity() + P.tau[i];
-    Vec2 a_i = par.run.gravity + P.external_a[i];
+    Vec2 a_i = par.run.gravity;
     const auto neighbours = pairs.neighbours(i);
     const auto F = pairs.gradient_factors(i);
     for (std::size_t k = 0; k < neighbours.size(); ++k) {

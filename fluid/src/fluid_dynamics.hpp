@@ -25,7 +25,8 @@ void compute_continuity_and_gradients(FluidParticles& particles, const sph::Neig
 void compute_wall_pressure(FluidParticles& particles, const sph::CellGrid& grid,
                            const FluidParameters& parameters, const TaitEquationOfState& eos);
 
-// Adds external_a (the coupling's share, zero when alone) and gravity.
+// The water's own forces and gravity; the coupling's share is added by the
+// integrator, since it arrives after this evaluation.
 void compute_accelerations(FluidParticles& particles, const sph::NeighbourList& pairs,
                            const FluidParameters& parameters);
 

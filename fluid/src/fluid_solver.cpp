@@ -50,14 +50,14 @@ sph::StepLimits FluidSolver::step_limits() const {
                           std::sqrt(a_max2), parameters_.mu / parameters_.rho0);
 }
 
-void FluidSolver::step(double dt) {
+void FluidSolver::begin_step(double dt) {
   FluidParticles& P = particles_;
   const long n = static_cast<long>(P.size());
   const double half = 0.5 * dt;
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
     if (!P.is_water(i)) continue;
-    P.v[i] += half * P.a[i];
+    P.v[i] += half * (P.a[i] + P.external_a[i]);
     P.x[i] += dt * P.v[i];
   }
   sort_and_find_neighbours();
@@ -66,12 +66,53 @@ void FluidSolver::step(double dt) {
   for (long i = 0; i < n; ++i)
     if (P.is_water(i)) P.rho[i] += dt * P.drho[i];
   update_pressure_and_accelerations();
+}
+
+void FluidSolver::end_step(double dt) {
+  FluidParticles& P = particles_;
+  const long n = static_cast<long>(P.size());
+  const double half = 0.5 * dt;
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i)
-    if (P.is_water(i)) P.v[i] += half * P.a[i];
+    if (P.is_water(i)) P.v[i] += half * (P.a[i] + P.external_a[i]);
   time_ += dt;
   ++steps_;
   check_state();
+}
+
+void FluidSolver::collect_interface(const sph::Region& region, sph::InterfaceParticles& out) {
+  const FluidParticles& P = particles_;
+  out.clear();
+  interface_index_.clear();
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (!P.is_water(i) || !region.contains(P.x[i])) continue;
+    interface_index_.push_back(static_cast<long>(i));
+    out.add(P.id[i], P.x[i], P.v[i], -P.p[i] * Mat2::Identity() + P.tau[i], P.m[i], P.rho[i],
+            parameters_.h, parameters_.c0);
+  }
+}
+
+void FluidSolver::set_interface_accelerations(const std::vector<Vec2>& accelerations) {
+  FluidParticles& P = particles_;
+  std::fill(P.external_a.begin(), P.external_a.end(), Vec2::Zero());
+  for (std::size_t k = 0; k < interface_index_.size() && k < accelerations.size(); ++k)
+    P.external_a[interface_index_[k]] = accelerations[k];
+}
+
+sph::Region FluidSolver::interaction_bounds() const {
+  sph::Region bounds;
+  for (std::size_t i = 0; i < particles_.size(); ++i)
+    if (particles_.is_water(i)) bounds.include(particles_.x[i]);
+  return bounds;
+}
+
+std::vector<sph::Gauge> FluidSolver::gauge_values() const {
+  const WaterGauges g = gauges();
+  return {{"front", "m", g.front},
+          {"height", "m", g.height},
+          {"kinetic_energy", "J/m", g.kinetic_energy},
+          {"max_speed", "m/s", g.max_speed},
+          {"water_particles", "1", static_cast<double>(g.water_particles)}};
 }
 
 void FluidSolver::check_state() const {

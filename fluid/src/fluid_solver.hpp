@@ -17,6 +17,7 @@
 #include "gauges.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/cell_grid.hpp"
+#include "sphcore/interface_particles.hpp"
 #include "sphcore/neighbour_list.hpp"
 #include "sphcore/snapshot_writer.hpp"
 #include "sphcore/time_step.hpp"
@@ -32,7 +33,27 @@ class FluidSolver {
 
   // Advances by dt. Throws sph::RunawayError if the new state is not physical;
   // the particles then hold that bad state.
-  void step(double dt);
+  void step(double dt) {
+    begin_step(dt);
+    end_step(dt);
+  }
+
+  // A coupled step is split where the coupler's answer is needed:
+  // begin_step kicks, drifts and evaluates the water's own forces at the new
+  // positions; then the coupler gets the interface and answers with the
+  // cross-phase accelerations (set_interface_accelerations); end_step kicks.
+  void begin_step(double dt);
+  void end_step(double dt);
+
+  // The water particles inside `region`, as the coupler needs them.
+  void collect_interface(const sph::Region& region, sph::InterfaceParticles& out);
+  // Accelerations for the particles of the last collect_interface, in its
+  // order; every other particle gets none.
+  void set_interface_accelerations(const std::vector<Vec2>& accelerations);
+  // Where water is (the box around every water particle).
+  sph::Region interaction_bounds() const;
+  double max_smoothing_length() const { return parameters_.h; }
+  std::vector<sph::Gauge> gauge_values() const;
 
   double time() const { return time_; }
   long steps() const { return steps_; }
@@ -46,6 +67,7 @@ class FluidSolver {
   void update_pressure_and_accelerations();
   void check_state() const;
 
+  std::vector<long> interface_index_;  // particle indices of the last collect_interface
   FluidParameters parameters_;
   TaitEquationOfState eos_;
   FluidParticles particles_;

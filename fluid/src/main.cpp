@@ -1,11 +1,12 @@
-// cosph-fluid: the weakly compressible SPH water solver. Runs a case alone when
-// the case has no solid; coupled runs come through the coupler.
+// cosph-fluid: the weakly compressible SPH water solver. Runs a case alone
+// when it has no solid; with --endpoint it takes part in a coupled run.
 #include <omp.h>
 
 #include <iostream>
 
 #include "fluid_parameters.hpp"
 #include "fluid_solver.hpp"
+#include "participant/coupled_run.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/solver_cli.hpp"
 #include "sphcore/standalone_run.hpp"
@@ -19,9 +20,9 @@ int run_fluid(int argc, char** argv) {
       argc, argv, "cosph-fluid", "Weakly compressible SPH water solver (SPEC.md \"Fluid\").");
   const sph::CaseFile case_file = sph::load_case(args.case_path, args.overrides);
   const auto parameters = cosph::fluid::read_fluid_parameters(case_file);
-  if (case_file.config.has_solid() || !args.endpoint.empty())
-    throw sph::ConfigError(args.case_path +
-                           ": solid: this case is coupled; coupled runs are not built yet");
+  const bool coupled = !args.endpoint.empty();
+  sph::require(coupled || !case_file.config.has_solid(), case_file, "solid",
+               "this case is coupled: run it with coupler/cosph, which starts the coupler");
   sph::make_output_dir(args.out_dir);
   sph::install_stop_handlers();
 
@@ -32,17 +33,25 @@ int run_fluid(int argc, char** argv) {
             << " wall particles, dx = " << parameters.dx << " m, h = " << parameters.h
             << " m, c0 = " << parameters.c0 << " m/s, " << omp_get_max_threads() << " threads"
             << std::endl;
-  sph::StandaloneRun<FluidSolver> run(solver, parameters.run, args.out_dir, "fluid",
-                                      {{"front", "m"},
-                                       {"height", "m"},
-                                       {"kinetic_energy", "J/m"},
-                                       {"max_speed", "m/s"},
-                                       {"water_particles", "1"}},
+
+  if (coupled) {
+    const double timeout = case_file.config.coupling().timeout() > 0.0
+                               ? case_file.config.coupling().timeout()
+                               : 10.0;
+    cosph::coupling::CoupledRun<FluidSolver> run(
+        solver, parameters.run,
+        {args.out_dir, "fluid", cosph::coupling::PhaseKind::fluid, "cosph-fluid (WCSPH)",
+         args.endpoint, timeout});
+    return run.run();
+  }
+  std::vector<sph::Column> columns;
+  for (const sph::Gauge& gauge : solver.gauge_values()) columns.push_back({gauge.name, gauge.unit});
+  sph::StandaloneRun<FluidSolver> run(solver, parameters.run, args.out_dir, "fluid", columns,
                                       [](const FluidSolver& s) {
-                                        const auto g = s.gauges();
-                                        return std::vector<double>{
-                                            g.front, g.height, g.kinetic_energy, g.max_speed,
-                                            static_cast<double>(g.water_particles)};
+                                        std::vector<double> values;
+                                        for (const auto& gauge : s.gauge_values())
+                                          values.push_back(gauge.value);
+                                        return values;
                                       });
   return run.run();
 }

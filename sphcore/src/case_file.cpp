@@ -1,6 +1,7 @@
 #include "sphcore/case_file.hpp"
 
 #include <google/protobuf/io/tokenizer.h>
+#include <google/protobuf/stubs/logging.h>
 #include <google/protobuf/text_format.h>
 
 #include <fstream>
@@ -53,6 +54,8 @@ CaseFile load_case(const std::string& path, const std::vector<std::string>& over
 }
 
 void apply_override(CaseFile& case_file, const std::string& assignment) {
+  // Our message says what went wrong; protobuf's own log line would be a second one.
+  pb::LogSilencer silence_protobuf_log;
   const std::string where = case_file.path + ": --set " + assignment + ": ";
   const auto equals = assignment.find('=');
   if (equals == std::string::npos || equals == 0)

@@ -23,7 +23,8 @@ inline double artificial_viscosity(const Vec2& x_ij, const Vec2& v_ij, double h_
 // Contribution of j to dv_i/dt:
 //   m_j ( (sigma_i + sigma_j) / (rho_i rho_j) - Pi_ij I ) . grad_i W_ij.
 // The bracket is symmetric in i, j and grad_j W_ji = -grad_i W_ij exactly, so
-// m_i a_i = -m_j a_j to the last bit: the exchange conserves momentum.
+// m_i a_i = -m_j a_j: exactly for equal masses, to round-off (the order of the
+// products differs) otherwise. The exchange conserves momentum.
 inline Vec2 momentum_pair(double m_j, const Mat2& sigma_i, const Mat2& sigma_j, double rho_i,
                           double rho_j, double Pi_ij, const Vec2& grad_W_ij) {
   const Mat2 bracket = (sigma_i + sigma_j) / (rho_i * rho_j) - Pi_ij * Mat2::Identity();

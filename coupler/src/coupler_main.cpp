@@ -1,0 +1,50 @@
+// cosph-coupler: the process between the fluid and the solid solver. It fixes
+// the common step and computes the cross-phase momentum terms once per pair.
+// Started by the launcher: coupler/cosph run CASE --out DIR.
+#include <iostream>
+
+#include "coupler_session.hpp"
+#include "participant/protocol.hpp"
+#include "sphcore/case_file.hpp"
+#include "sphcore/run_control.hpp"
+#include "sphcore/solver_cli.hpp"
+
+namespace {
+
+int run(int argc, char** argv) {
+  const sph::SolverArgs args = sph::parse_solver_args(
+      argc, argv, "cosph-coupler",
+      "Couples cosph-fluid and a solid solver over ZeroMQ (SPEC.md \"the coupling rule\").");
+  const sph::CaseFile case_file = sph::load_case(args.case_path, args.overrides);
+  sph::require(case_file.config.has_fluid() && case_file.config.has_solid(), case_file,
+               "fluid, solid", "a coupled case needs both");
+  sph::require(!args.endpoint.empty(), case_file, "--endpoint",
+               "the coupler needs an endpoint to bind (ipc://PATH or tcp://HOST:PORT)");
+  const auto& coupling = case_file.config.coupling();
+  const auto& fluid = case_file.config.fluid();
+  sph::require(coupling.timeout() >= 0.0, case_file, "coupling.timeout", "must not be negative");
+  sph::require(coupling.artificial_viscosity() >= 0.0, case_file,
+               "coupling.artificial_viscosity", "must not be negative");
+
+  cosph::coupler::CouplerSettings settings;
+  settings.endpoint = args.endpoint;
+  settings.out_dir = args.out_dir;
+  settings.run = sph::read_run_parameters(case_file);
+  settings.timeout_seconds = coupling.timeout() > 0.0 ? coupling.timeout() : 10.0;
+  // By default fluid-solid pairs are damped like water pairs (SPEC.md: A ~ 0.02, B = 0).
+  settings.cross_phase.A = coupling.artificial_viscosity() > 0.0 ? coupling.artificial_viscosity()
+                           : fluid.artificial_viscosity() > 0.0   ? fluid.artificial_viscosity()
+                                                                  : 0.02;
+  settings.cross_phase.B = coupling.artificial_viscosity_quadratic() > 0.0
+                               ? coupling.artificial_viscosity_quadratic()
+                               : fluid.artificial_viscosity_quadratic();
+  sph::make_output_dir(args.out_dir);
+  sph::install_stop_handlers();
+  return cosph::coupler::run_coupler(settings);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return sph::run_guarded("cosph-coupler", [&] { return run(argc, argv); });
+}

@@ -1,0 +1,282 @@
+#include "coupler_session.hpp"
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <iostream>
+
+#include "participant/protocol.hpp"
+#include "sphcore/run_control.hpp"
+#include "sphcore/timeseries_writer.hpp"
+
+namespace cosph::coupler {
+
+namespace cp = cosph::coupling;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+constexpr int kFluid = 0, kSolid = 1;
+const char* kSideName[2] = {"fluid", "solid"};
+
+struct Peer {
+  std::string identity;
+  std::string solver;
+  double max_h = 0.0;
+  sph::Region bounds;
+  cp::InterfaceState state;
+  sph::InterfaceParticles particles;
+};
+
+class Session {
+ public:
+  explicit Session(const CouplerSettings& settings)
+      : settings_(settings), timeout_(static_cast<long>(1000.0 * settings.timeout_seconds)) {
+    socket_.set(zmq::sockopt::linger, 0);
+    socket_.set(zmq::sockopt::router_mandatory, 1);
+    socket_.bind(settings.endpoint);
+  }
+
+  int run() {
+    handshake();
+    for (long step = 0;; ++step) {
+      receive_states(step);
+      const bool stop = answer(step);
+      if (stop) return 0;
+      if (sph::stop_requested()) fail("the coupler was interrupted (Ctrl-C or SIGTERM)");
+    }
+  }
+
+ private:
+  // Tells every known peer why the run stops, then throws.
+  [[noreturn]] void fail(const std::string& message) {
+    cp::Envelope error;
+    error.mutable_error()->set_message(message);
+    for (const Peer& peer : peers_)
+      if (!peer.identity.empty()) {
+        try {
+          cp::send_to(socket_, peer.identity, error);
+        } catch (const zmq::error_t&) {
+          // that peer is gone already
+        }
+      }
+    throw cp::CouplingError(message);
+  }
+
+  cp::Routed await(const std::string& waiting_for) {
+    const auto deadline = Clock::now() + timeout_;
+    const auto start = Clock::now();
+    std::optional<cp::Routed> message;
+    try {
+      message = cp::receive_routed(
+          socket_, std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()));
+    } catch (const cp::CouplingError& error) {
+      fail(error.what());
+    }
+    wait_seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
+    if (!message)
+      fail(waiting_for + ": nothing within " + std::to_string(settings_.timeout_seconds) +
+           " s (the solver died, stalled, or never connected)");
+    if (message->envelope.has_error()) {
+      const int side = side_of(message->identity);
+      const std::string who = side >= 0 ? kSideName[side] : "a peer";
+      fail(who + " stopped: " + message->envelope.error().message());
+    }
+    return *message;
+  }
+
+  int side_of(const std::string& identity) const {
+    for (int side : {kFluid, kSolid})
+      if (peers_[side].identity == identity) return side;
+    return -1;
+  }
+
+  void handshake() {
+    while (peers_[kFluid].identity.empty() || peers_[kSolid].identity.empty()) {
+      const cp::Routed message = await("waiting for the solvers to connect");
+      if (!message.envelope.has_hello()) fail("a peer spoke before its Hello");
+      const cp::Hello& hello = message.envelope.hello();
+      const int side = hello.phase() == cp::SOLID ? kSolid : kFluid;
+      const std::string problem =
+          cp::check_hello(hello, side == kSolid ? cp::SOLID : cp::FLUID);
+      if (!problem.empty() || !peers_[side].identity.empty()) {
+        const std::string reason =
+            problem.empty() ? "a second " + std::string(kSideName[side]) + " solver connected"
+                            : problem;
+        cp::Envelope error;
+        error.mutable_error()->set_message(reason);
+        cp::send_to(socket_, message.identity, error);
+        fail("refused '" + hello.solver() + "': " + reason);
+      }
+      Peer& peer = peers_[side];
+      peer.identity = message.identity;
+      peer.solver = hello.solver();
+      peer.max_h = hello.max_smoothing_length();
+      peer.bounds = cp::from_proto(hello.bounds());
+    }
+    for (int side : {kFluid, kSolid}) {
+      cp::Envelope welcome;
+      welcome.mutable_welcome()->set_protocol_version(cp::kProtocolVersion);
+      *welcome.mutable_welcome()->mutable_send_region() = cp::to_proto(send_region(side));
+      cp::send_to(socket_, peers_[side].identity, welcome);
+    }
+    std::cout << "cosph-coupler: coupling '" << peers_[kFluid].solver << "' and '"
+              << peers_[kSolid].solver << "' at " << settings_.endpoint << std::endl;
+  }
+
+  // Particles of `side` that the other phase can reach within the next step:
+  // the other side's bounds, grown by the largest pair reach plus a margin
+  // for one step's motion (less than h at any stable CFL number).
+  sph::Region send_region(int side) const {
+    const Peer& other = peers_[1 - side];
+    const double reach = peers_[kFluid].max_h + peers_[kSolid].max_h;
+    return other.bounds.grown(reach + std::max(peers_[kFluid].max_h, peers_[kSolid].max_h));
+  }
+
+  void receive_states(long step) {
+    bool got[2] = {false, false};
+    while (!got[kFluid] || !got[kSolid]) {
+      const std::string missing = !got[kFluid] && !got[kSolid] ? "fluid and solid"
+                                  : !got[kFluid]               ? "fluid"
+                                                               : "solid";
+      cp::Routed message = await("step " + std::to_string(step) + ", waiting for the " + missing);
+      const int side = side_of(message.identity);
+      if (side < 0) fail("a message from an unknown peer");
+      if (!message.envelope.has_state())
+        fail(std::string(kSideName[side]) + " sent the wrong message at step " +
+             std::to_string(step));
+      Peer& peer = peers_[side];
+      const auto parse_start = Clock::now();
+      peer.state = std::move(*message.envelope.mutable_state());
+      try {
+        peer.particles = cp::from_proto(peer.state);
+      } catch (const cp::CouplingError& error) {
+        fail(std::string(kSideName[side]) + ": " + error.what());
+      }
+      messaging_seconds_ += std::chrono::duration<double>(Clock::now() - parse_start).count();
+      peer.bounds = cp::from_proto(peer.state.bounds());
+      peer.max_h = peer.state.max_smoothing_length();
+      got[side] = true;
+    }
+    const double t_fluid = peers_[kFluid].state.time(), t_solid = peers_[kSolid].state.time();
+    if (std::abs(t_fluid - t_solid) > 1e-9 * std::max(1.0, settings_.run.end_time))
+      fail("the solvers are out of step: fluid at t = " + std::to_string(t_fluid) +
+           " s, solid at t = " + std::to_string(t_solid) + " s");
+  }
+
+  // Returns whether the run is over.
+  bool answer(long step) {
+    const auto pair_start = Clock::now();
+    const CrossPhaseForces forces = compute_cross_phase_forces(
+        peers_[kFluid].particles, peers_[kSolid].particles, settings_.cross_phase);
+    pair_seconds_ += std::chrono::duration<double>(Clock::now() - pair_start).count();
+
+    const double t = peers_[kFluid].state.time();
+    const double end = settings_.run.end_time;
+    const bool stop = t >= end - 1e-9 * end;
+    double dt = std::min(peers_[kFluid].state.proposed_dt(), peers_[kSolid].state.proposed_dt());
+    if (!(dt > 0.0) || !std::isfinite(dt))
+      fail("a solver proposed a step that is not positive at t = " + std::to_string(t) + " s");
+    dt = std::min(dt, end - t);
+    record(step, t, dt, forces, stop);
+
+    const auto send_start = Clock::now();
+    for (int side : {kFluid, kSolid}) {
+      cp::Envelope reply;
+      cp::CouplingStep& s = *reply.mutable_step();
+      s.set_step(static_cast<std::uint64_t>(step));
+      s.set_dt(dt);
+      s.set_stop(stop);
+      const auto& a = side == kFluid ? forces.fluid_a : forces.solid_a;
+      s.mutable_acceleration()->Reserve(2 * static_cast<int>(a.size()));
+      for (const sph::Vec2& acceleration : a) {
+        s.add_acceleration(acceleration.x());
+        s.add_acceleration(acceleration.y());
+      }
+      *s.mutable_send_region() = cp::to_proto(send_region(side));
+      try {
+        cp::send_to(socket_, peers_[side].identity, reply);
+      } catch (const zmq::error_t& error) {
+        fail(std::string("cannot reach the ") + kSideName[side] + " solver: " + error.what());
+      }
+    }
+    messaging_seconds_ += std::chrono::duration<double>(Clock::now() - send_start).count();
+    progress_.report(t, step, dt);
+    return stop;
+  }
+
+  void record(long step, double t, double dt, const CrossPhaseForces& forces, bool stop) {
+    if (!timeseries_) open_outputs();
+    if (t < next_output_ && !stop) return;
+    next_output_ += settings_.run.output_interval;
+    std::vector<double> row{t, dt};
+    for (int side : {kFluid, kSolid})
+      for (const auto& gauge : peers_[side].state.gauges()) row.push_back(gauge.value());
+    row.push_back(level_ < 0 ? 0.0 : peers_[kFluid].state.gauges(level_).value());
+    if (row.size() != timeseries_->column_count())
+      fail("a solver changed the set of gauges it sends during the run");
+    timeseries_->write_row(row);
+    const std::array<double, 13> coupling{t,
+                                          forces.force_on_fluid.x(),
+                                          forces.force_on_fluid.y(),
+                                          forces.force_on_solid.x(),
+                                          forces.force_on_solid.y(),
+                                          static_cast<double>(peers_[kFluid].particles.size()),
+                                          static_cast<double>(peers_[kSolid].particles.size()),
+                                          static_cast<double>(forces.pairs),
+                                          static_cast<double>(step),
+                                          wait_seconds_,
+                                          messaging_seconds_,
+                                          pair_seconds_,
+                                          dt};
+    coupling_->write_row(coupling);
+  }
+
+  void open_outputs() {
+    std::vector<sph::Column> columns{{"t", "s"}, {"dt", "s"}};
+    for (int side : {kFluid, kSolid}) {
+      const auto& gauges = peers_[side].state.gauges();
+      for (int g = 0; g < gauges.size(); ++g) {
+        columns.push_back({gauges[g].name(), gauges[g].unit()});
+        if (side == kFluid && gauges[g].name() == "height") level_ = g;
+      }
+    }
+    // The water level at the left wall, the scene's name for the fluid's "height".
+    columns.push_back({"level", "m"});
+    timeseries_.emplace(settings_.out_dir + "/timeseries.csv", columns);
+    coupling_.emplace(settings_.out_dir + "/coupling.csv",
+                      std::vector<sph::Column>{{"t", "s"},
+                                               {"force_on_fluid_x", "N/m"},
+                                               {"force_on_fluid_y", "N/m"},
+                                               {"force_on_solid_x", "N/m"},
+                                               {"force_on_solid_y", "N/m"},
+                                               {"fluid_interface_particles", "1"},
+                                               {"solid_interface_particles", "1"},
+                                               {"pairs", "1"},
+                                               {"step", "1"},
+                                               {"waiting", "s"},
+                                               {"messaging", "s"},
+                                               {"pair_forces", "s"},
+                                               {"dt", "s"}});
+  }
+
+  CouplerSettings settings_;
+  std::chrono::milliseconds timeout_;
+  zmq::context_t context_{1};
+  zmq::socket_t socket_{context_, zmq::socket_type::router};
+  std::array<Peer, 2> peers_;
+  std::optional<sph::TimeSeriesWriter> timeseries_, coupling_;
+  int level_ = -1;
+  double next_output_ = 0.0;
+  double wait_seconds_ = 0.0, messaging_seconds_ = 0.0, pair_seconds_ = 0.0;
+  sph::ProgressReporter progress_{settings_.run.end_time};
+};
+
+}  // namespace
+
+int run_coupler(const CouplerSettings& settings) {
+  Session session(settings);
+  return session.run();
+}
+
+}  // namespace cosph::coupler

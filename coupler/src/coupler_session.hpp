@@ -1,0 +1,25 @@
+// The coupler process's work: bind one endpoint, greet the fluid and the
+// solid, then, step after step, take both interfaces, fix the common step,
+// compute the cross-phase forces and answer each side with its share.
+#pragma once
+
+#include <string>
+
+#include "cross_phase_forces.hpp"
+#include "sphcore/run_parameters.hpp"
+
+namespace cosph::coupler {
+
+struct CouplerSettings {
+  std::string endpoint;
+  std::string out_dir;
+  sph::RunParameters run;
+  CrossPhaseParameters cross_phase;
+  double timeout_seconds;
+};
+
+// Returns the exit code; throws cosph::coupling::CouplingError when a peer
+// fails, vanishes or misbehaves (after telling the other peer).
+int run_coupler(const CouplerSettings& settings);
+
+}  // namespace cosph::coupler

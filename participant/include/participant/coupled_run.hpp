@@ -1,0 +1,114 @@
+// The time loop of a solver in a coupled run: the counterpart of
+// sph::StandaloneRun, with the coupler choosing every step.
+//
+// Per step: begin_step(dt) (kick, drift, own forces), one exchange with the
+// coupler (interface out; cross-phase accelerations, the next dt and the stop
+// flag in), end_step(dt) (kick). The coupler writes timeseries.csv from the
+// gauges each solver sends; each solver writes its own snapshots.
+//
+// Solver needs: begin_step, end_step, step_limits, collect_interface,
+// set_interface_accelerations, interaction_bounds, max_smoothing_length,
+// gauge_values, time, steps, snapshot, particles().size().
+#pragma once
+
+#include <string>
+
+#include "participant/participant.hpp"
+#include "sphcore/run_control.hpp"
+#include "sphcore/run_parameters.hpp"
+#include "sphcore/runaway_error.hpp"
+#include "sphcore/snapshot_writer.hpp"
+
+namespace cosph::coupling {
+
+struct CoupledRunSettings {
+  std::string out_dir;
+  std::string name;  // "fluid", "solid": snapshot file names
+  PhaseKind phase;
+  std::string solver_description;
+  std::string endpoint;
+  double timeout_seconds;
+};
+
+template <class Solver>
+class CoupledRun {
+ public:
+  CoupledRun(Solver& solver, const sph::RunParameters& run, CoupledRunSettings settings)
+      : solver_(solver),
+        run_(run),
+        settings_(std::move(settings)),
+        snapshots_(settings_.out_dir, settings_.name),
+        participant_(settings_.endpoint, settings_.timeout_seconds) {}
+
+  // Returns 0 when the coupler stopped the run at its end, 130 on Ctrl-C.
+  int run() {
+    try {
+      return loop();
+    } catch (const sph::RunawayError& error) {
+      const std::string message = std::string(error.what()) + ". Last good snapshot: " +
+                                  last_snapshot_ + " (t = " + std::to_string(last_time_) + " s)";
+      participant_.report_error(settings_.name + ": " + message);
+      throw sph::RunawayError(message);
+    } catch (const std::exception& error) {
+      participant_.report_error(settings_.name + ": " + error.what());
+      throw;
+    }
+  }
+
+ private:
+  int loop() {
+    sph::Region region =
+        participant_.connect(settings_.phase, settings_.solver_description,
+                             solver_.particles().size(), solver_.max_smoothing_length(),
+                             solver_.interaction_bounds());
+    sph::ProgressReporter progress(run_.end_time);
+    StepReply reply = exchange(region, solver_.time(), solver_.steps());
+    double next_snapshot = 0.0;
+    for (;;) {
+      if (solver_.time() >= next_snapshot || reply.stop) {
+        write_snapshot();
+        next_snapshot += run_.snapshot_interval;
+      }
+      if (reply.stop) break;
+      if (sph::stop_requested()) {
+        write_snapshot();
+        participant_.report_error(settings_.name + " was interrupted (Ctrl-C or SIGTERM)");
+        return 130;
+      }
+      const double dt = reply.dt;
+      solver_.begin_step(dt);
+      // The interface has moved to t + dt: label it so (end_step advances time() only later).
+      reply = exchange(reply.send_region, solver_.time() + dt, solver_.steps() + 1);
+      solver_.end_step(dt);
+      progress.report(solver_.time(), solver_.steps(), dt);
+    }
+    progress.report(solver_.time(), solver_.steps(), 0.0, true);
+    return 0;
+  }
+
+  StepReply exchange(const sph::Region& region, double time, long step) {
+    solver_.collect_interface(region, interface_);
+    StepReply reply = participant_.exchange(
+        step, time, solver_.step_limits().smallest(),
+        solver_.interaction_bounds(), solver_.max_smoothing_length(), interface_,
+        solver_.gauge_values());
+    solver_.set_interface_accelerations(reply.acceleration);
+    return reply;
+  }
+
+  void write_snapshot() {
+    last_snapshot_ = snapshots_.write(solver_.snapshot(), solver_.time());
+    last_time_ = solver_.time();
+  }
+
+  Solver& solver_;
+  sph::RunParameters run_;
+  CoupledRunSettings settings_;
+  sph::SnapshotWriter snapshots_;
+  Participant participant_;
+  sph::InterfaceParticles interface_;
+  std::string last_snapshot_ = "(none yet)";
+  double last_time_ = 0.0;
+};
+
+}  // namespace cosph::coupling

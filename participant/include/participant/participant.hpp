@@ -1,0 +1,50 @@
+// The participant layer: what a solver's main() uses to take part in a coupled
+// run. It carries the solver's interface particles out and the cross-phase
+// accelerations in; ZeroMQ and the generated protobuf code stay behind it
+// (pimpl), so solver code never sees them.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sphcore/interface_particles.hpp"
+
+namespace cosph::coupling {
+
+enum class PhaseKind { fluid, solid };
+
+struct StepReply {
+  double dt;                              // the common step to take next
+  std::vector<sph::Vec2> acceleration;    // per particle sent, in the order sent
+  sph::Region send_region;                // where to send particles from next time
+  bool stop;                              // the run is over
+};
+
+class Participant {
+ public:
+  // Connects to the coupler at `endpoint` (ipc:// or tcp://). Every later
+  // receive waits at most timeout_seconds plus a grace (max(1 s, 25 %)) before
+  // throwing CouplingError, so that the coupler's own timeout fires first.
+  Participant(const std::string& endpoint, double timeout_seconds);
+  ~Participant();
+  Participant(const Participant&) = delete;
+  Participant& operator=(const Participant&) = delete;
+
+  // The handshake. Returns the region to send particles from first.
+  sph::Region connect(PhaseKind phase, const std::string& solver_name, std::size_t particle_count,
+                      double max_smoothing_length, const sph::Region& bounds);
+
+  StepReply exchange(long step, double time, double proposed_dt, const sph::Region& bounds,
+                     double max_smoothing_length, const sph::InterfaceParticles& particles,
+                     const std::vector<sph::Gauge>& gauges);
+
+  // Best effort: tells the coupler why this solver stops, so the others stop too.
+  void report_error(const std::string& message) noexcept;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace cosph::coupling

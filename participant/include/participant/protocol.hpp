@@ -1,0 +1,54 @@
+// Building, checking and parsing the messages of proto/coupling.proto, and
+// moving them over ZeroMQ with a timeout on every receive. The conversions are
+// pure functions, tested without a network (tests/coupling).
+#pragma once
+
+#include <chrono>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <zmq.hpp>
+
+#include "coupling.pb.h"
+#include "sphcore/interface_particles.hpp"
+
+namespace cosph::coupling {
+
+inline constexpr unsigned kProtocolVersion = 1;
+
+// A peer misbehaved, vanished or refused us: the message is ready for a user.
+class CouplingError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+const char* phase_name(Phase phase);
+
+Region to_proto(const sph::Region& region);
+sph::Region from_proto(const Region& region);
+
+void to_proto(const sph::InterfaceParticles& particles, InterfaceState& state);
+// Throws CouplingError if the arrays do not have one entry per particle.
+sph::InterfaceParticles from_proto(const InterfaceState& state);
+
+// Empty if the Hello is acceptable for a peer of the expected phase, else the
+// reason, naming what differs.
+std::string check_hello(const Hello& hello, Phase expected);
+
+std::string serialise(const Envelope& envelope);
+// Throws CouplingError naming `from` if the bytes are not an Envelope.
+Envelope parse(const std::string& bytes, const std::string& from);
+
+// One-frame messages (DEALER side) and routed ones (ROUTER side: identity,
+// then the frame). Receives return nothing when the timeout passes.
+void send(zmq::socket_t& socket, const Envelope& envelope);
+void send_to(zmq::socket_t& socket, const std::string& identity, const Envelope& envelope);
+std::optional<Envelope> receive(zmq::socket_t& socket, std::chrono::milliseconds timeout,
+                                const std::string& from);
+struct Routed {
+  std::string identity;
+  Envelope envelope;
+};
+std::optional<Routed> receive_routed(zmq::socket_t& socket, std::chrono::milliseconds timeout);
+
+}  // namespace cosph::coupling

@@ -1,0 +1,109 @@
+#include "participant/participant.hpp"
+
+#include <algorithm>
+#include <zmq.hpp>
+
+#include "participant/protocol.hpp"
+
+namespace cosph::coupling {
+
+struct Participant::Impl {
+  zmq::context_t context{1};
+  zmq::socket_t socket{context, zmq::socket_type::dealer};
+  std::chrono::milliseconds timeout;
+  std::string endpoint;
+  std::size_t sent = 0;
+
+  Envelope await(const char* expected) {
+    auto reply = receive(socket, timeout, "the coupler");
+    if (!reply)
+      throw CouplingError("the coupler at " + endpoint + " did not answer within " +
+                          std::to_string(static_cast<double>(timeout.count()) / 1000.0) + " s (waiting for " +
+                          expected + ")");
+    if (reply->has_error()) throw CouplingError("coupler: " + reply->error().message());
+    return *reply;
+  }
+};
+
+Participant::Participant(const std::string& endpoint, double timeout_seconds)
+    : impl_(std::make_unique<Impl>()) {
+  // The coupler restarts its own timeout when the other solver's message arrives,
+  // after this solver has started waiting: a solver that waited only as long would
+  // always give up first and blame the coupler for a peer that died. The grace
+  // lets the coupler, which knows who is missing, report first.
+  const double grace = std::max(1.0, 0.25 * timeout_seconds);
+  impl_->timeout =
+      std::chrono::milliseconds(static_cast<long>(1000.0 * (timeout_seconds + grace)));
+  impl_->endpoint = endpoint;
+  impl_->socket.set(zmq::sockopt::linger, 0);  // never hang on exit over unsent messages
+  try {
+    impl_->socket.connect(endpoint);
+  } catch (const zmq::error_t& error) {
+    throw CouplingError("cannot connect to the coupler at " + endpoint + ": " + error.what());
+  }
+}
+
+Participant::~Participant() = default;
+
+sph::Region Participant::connect(PhaseKind phase, const std::string& solver_name,
+                                 std::size_t particle_count, double max_smoothing_length,
+                                 const sph::Region& bounds) {
+  Envelope hello;
+  Hello& h = *hello.mutable_hello();
+  h.set_protocol_version(kProtocolVersion);
+  h.set_phase(phase == PhaseKind::fluid ? FLUID : SOLID);
+  h.set_solver(solver_name);
+  h.set_particle_count(particle_count);
+  h.set_max_smoothing_length(max_smoothing_length);
+  *h.mutable_bounds() = to_proto(bounds);
+  send(impl_->socket, hello);
+  const Envelope welcome = impl_->await("its Welcome");
+  if (!welcome.has_welcome())
+    throw CouplingError("the coupler answered the handshake with the wrong message");
+  return from_proto(welcome.welcome().send_region());
+}
+
+StepReply Participant::exchange(long step, double time, double proposed_dt,
+                                const sph::Region& bounds, double max_smoothing_length,
+                                const sph::InterfaceParticles& particles,
+                                const std::vector<sph::Gauge>& gauges) {
+  Envelope message;
+  InterfaceState& state = *message.mutable_state();
+  state.set_step(static_cast<std::uint64_t>(step));
+  state.set_time(time);
+  state.set_proposed_dt(proposed_dt);
+  *state.mutable_bounds() = to_proto(bounds);
+  state.set_max_smoothing_length(max_smoothing_length);
+  to_proto(particles, state);
+  for (const sph::Gauge& gauge : gauges) {
+    Gauge& g = *state.add_gauges();
+    g.set_name(gauge.name);
+    g.set_unit(gauge.unit);
+    g.set_value(gauge.value);
+  }
+  send(impl_->socket, message);
+
+  const Envelope reply = impl_->await("the common step");
+  if (!reply.has_step()) throw CouplingError("the coupler answered a step with the wrong message");
+  const CouplingStep& s = reply.step();
+  if (!s.stop() && s.acceleration_size() != 2 * static_cast<int>(particles.size()))
+    throw CouplingError("the coupler sent " + std::to_string(s.acceleration_size() / 2) +
+                        " accelerations for " + std::to_string(particles.size()) + " particles");
+  StepReply out{s.dt(), {}, from_proto(s.send_region()), s.stop()};
+  out.acceleration.reserve(particles.size());
+  for (int k = 0; k + 1 < s.acceleration_size(); k += 2)
+    out.acceleration.emplace_back(s.acceleration(k), s.acceleration(k + 1));
+  return out;
+}
+
+void Participant::report_error(const std::string& message) noexcept {
+  try {
+    Envelope error;
+    error.mutable_error()->set_message(message);
+    impl_->socket.send(zmq::buffer(serialise(error)), zmq::send_flags::dontwait);
+  } catch (...) {
+    // The coupler may be gone already; the launcher reports this solver's exit.
+  }
+}
+
+}  // namespace cosph::coupling

@@ -1,0 +1,142 @@
+#include "participant/protocol.hpp"
+
+namespace cosph::coupling {
+
+const char* phase_name(Phase phase) {
+  switch (phase) {
+    case FLUID: return "fluid";
+    case SOLID: return "solid";
+    default: return "unspecified";
+  }
+}
+
+Region to_proto(const sph::Region& region) {
+  Region out;
+  out.set_min_x(region.min.x());
+  out.set_min_y(region.min.y());
+  out.set_max_x(region.max.x());
+  out.set_max_y(region.max.y());
+  return out;
+}
+
+sph::Region from_proto(const Region& region) {
+  return {sph::Vec2(region.min_x(), region.min_y()), sph::Vec2(region.max_x(), region.max_y())};
+}
+
+void to_proto(const sph::InterfaceParticles& P, InterfaceState& state) {
+  const int n = static_cast<int>(P.size());
+  state.clear_id(), state.clear_position(), state.clear_velocity(), state.clear_stress();
+  state.clear_mass(), state.clear_density(), state.clear_smoothing_length();
+  state.clear_sound_speed();
+  state.mutable_id()->Reserve(n);
+  state.mutable_position()->Reserve(2 * n);
+  state.mutable_velocity()->Reserve(2 * n);
+  state.mutable_stress()->Reserve(4 * n);
+  for (int i = 0; i < n; ++i) {
+    state.add_id(static_cast<std::uint64_t>(P.id[i]));
+    state.add_position(P.x[i].x()), state.add_position(P.x[i].y());
+    state.add_velocity(P.v[i].x()), state.add_velocity(P.v[i].y());
+    const sph::Mat2& s = P.sigma[i];
+    state.add_stress(s(0, 0)), state.add_stress(s(0, 1));
+    state.add_stress(s(1, 0)), state.add_stress(s(1, 1));
+  }
+  state.mutable_mass()->Add(P.m.begin(), P.m.end());
+  state.mutable_density()->Add(P.rho.begin(), P.rho.end());
+  state.mutable_smoothing_length()->Add(P.h.begin(), P.h.end());
+  state.mutable_sound_speed()->Add(P.c.begin(), P.c.end());
+}
+
+sph::InterfaceParticles from_proto(const InterfaceState& state) {
+  const int n = state.id_size();
+  auto expect = [n](int size, int per_particle, const char* field) {
+    if (size != per_particle * n)
+      throw CouplingError("malformed InterfaceState: " + std::string(field) + " has " +
+                          std::to_string(size) + " values for " + std::to_string(n) +
+                          " particles (expected " + std::to_string(per_particle * n) + ")");
+  };
+  expect(state.position_size(), 2, "position");
+  expect(state.velocity_size(), 2, "velocity");
+  expect(state.stress_size(), 4, "stress");
+  expect(state.mass_size(), 1, "mass");
+  expect(state.density_size(), 1, "density");
+  expect(state.smoothing_length_size(), 1, "smoothing_length");
+  expect(state.sound_speed_size(), 1, "sound_speed");
+  sph::InterfaceParticles P;
+  for (int i = 0; i < n; ++i) {
+    sph::Mat2 sigma;
+    sigma << state.stress(4 * i), state.stress(4 * i + 1), state.stress(4 * i + 2),
+        state.stress(4 * i + 3);
+    P.add(static_cast<long>(state.id(i)),
+          sph::Vec2(state.position(2 * i), state.position(2 * i + 1)),
+          sph::Vec2(state.velocity(2 * i), state.velocity(2 * i + 1)), sigma, state.mass(i),
+          state.density(i), state.smoothing_length(i), state.sound_speed(i));
+    if (!(state.mass(i) > 0.0 && state.density(i) > 0.0 && state.smoothing_length(i) > 0.0))
+      throw CouplingError("malformed InterfaceState: particle " + std::to_string(state.id(i)) +
+                          " has a mass, density or smoothing length that is not positive");
+  }
+  return P;
+}
+
+std::string check_hello(const Hello& hello, Phase expected) {
+  if (hello.protocol_version() != kProtocolVersion)
+    return "protocol version " + std::to_string(hello.protocol_version()) + " of '" +
+           hello.solver() + "' differs from the coupler's version " +
+           std::to_string(kProtocolVersion);
+  if (hello.phase() != expected)
+    return "'" + hello.solver() + "' announced phase " + phase_name(hello.phase()) +
+           " where the coupler expects " + phase_name(expected);
+  if (!(hello.max_smoothing_length() > 0.0))
+    return "'" + hello.solver() + "' announced a smoothing length that is not positive";
+  return {};
+}
+
+std::string serialise(const Envelope& envelope) { return envelope.SerializeAsString(); }
+
+Envelope parse(const std::string& bytes, const std::string& from) {
+  Envelope envelope;
+  if (!envelope.ParseFromString(bytes) || envelope.body_case() == Envelope::BODY_NOT_SET)
+    throw CouplingError("garbage from " + from + ": " + std::to_string(bytes.size()) +
+                        " bytes that are not a cosph coupling message");
+  return envelope;
+}
+
+void send(zmq::socket_t& socket, const Envelope& envelope) {
+  const std::string bytes = serialise(envelope);
+  socket.send(zmq::buffer(bytes), zmq::send_flags::none);
+}
+
+void send_to(zmq::socket_t& socket, const std::string& identity, const Envelope& envelope) {
+  const std::string bytes = serialise(envelope);
+  socket.send(zmq::buffer(identity), zmq::send_flags::sndmore);
+  socket.send(zmq::buffer(bytes), zmq::send_flags::none);
+}
+
+namespace {
+bool wait_readable(zmq::socket_t& socket, std::chrono::milliseconds timeout) {
+  zmq::pollitem_t item{socket.handle(), 0, ZMQ_POLLIN, 0};
+  return zmq::poll(&item, 1, timeout) > 0;
+}
+}  // namespace
+
+std::optional<Envelope> receive(zmq::socket_t& socket, std::chrono::milliseconds timeout,
+                                const std::string& from) {
+  if (!wait_readable(socket, timeout)) return std::nullopt;
+  zmq::message_t frame;
+  (void)socket.recv(frame, zmq::recv_flags::none);
+  return parse(frame.to_string(), from);
+}
+
+std::optional<Routed> receive_routed(zmq::socket_t& socket, std::chrono::milliseconds timeout) {
+  if (!wait_readable(socket, timeout)) return std::nullopt;
+  zmq::message_t identity, frame;
+  (void)socket.recv(identity, zmq::recv_flags::none);
+  if (!identity.more()) throw CouplingError("garbage: a message without a routing frame");
+  (void)socket.recv(frame, zmq::recv_flags::none);
+  if (frame.more()) {
+    while (frame.more()) (void)socket.recv(frame, zmq::recv_flags::none);
+    throw CouplingError("garbage: a message of more than one frame");
+  }
+  return Routed{identity.to_string(), parse(frame.to_string(), "a peer")};
+}
+
+}  // namespace cosph::coupling

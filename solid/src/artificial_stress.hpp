@@ -1,0 +1,45 @@
+// Artificial stress against the tensile instability (Gray, Monaghan & Swift
+// 2001, sec. 4; Monaghan 2000; SPEC.md "Tensile instability").
+//
+// Under tension, SPH particles attract each other where the kernel's
+// second derivative makes the pair force grow as they approach: they clump
+// and the body tears apart without any physical cause. The cure adds to each
+// solid pair a short-range repulsion f_ij^n (R_i + R_j), f_ij = W(r_ij)/W(dx),
+// which only acts where particles come closer than the initial spacing, and
+// only in the directions in which the stress is tensile:
+//   R_i = Q diag(R'_1, R'_2) Q^T,  R'_k = -eps sigma'_k / rho_i^2 if sigma'_k > 0, else 0,
+// with sigma_i = Q diag(sigma'_1, sigma'_2) Q^T.
+#pragma once
+
+#include <cmath>
+
+#include "sphcore/types.hpp"
+
+namespace cosph::solid {
+
+using sph::Mat2;
+using sph::Vec2;
+
+// Closed form for the symmetric 2x2 sigma: principal values m +- r, and the
+// spectral projectors P_1 = (sigma - lambda_2 I) / (lambda_1 - lambda_2), P_2 = I - P_1.
+inline Mat2 artificial_stress(const Mat2& sigma, double rho, double epsilon) {
+  auto R_principal = [&](double value) {
+    return value > 0.0 ? -epsilon * value / (rho * rho) : 0.0;
+  };
+  const double mean = 0.5 * (sigma(0, 0) + sigma(1, 1));
+  const double half_difference = 0.5 * (sigma(0, 0) - sigma(1, 1));
+  const double radius = std::hypot(half_difference, 0.5 * (sigma(0, 1) + sigma(1, 0)));
+  const double lambda_1 = mean + radius, lambda_2 = mean - radius;
+  if (!(radius > 1e-12 * std::abs(mean))) return R_principal(mean) * Mat2::Identity();
+  const Mat2 P_1 = (sigma - lambda_2 * Mat2::Identity()) / (lambda_1 - lambda_2);
+  return R_principal(lambda_1) * P_1 + R_principal(lambda_2) * (Mat2::Identity() - P_1);
+}
+
+// Contribution of j to dv_i/dt: m_j f_ij^n (R_i + R_j) . grad_i W_ij, with
+// f_n = f_ij^n. Antisymmetric in i, j like the momentum pair term.
+inline Vec2 artificial_stress_pair(double m_j, double f_n, const Mat2& R_i, const Mat2& R_j,
+                                   const Vec2& grad_W_ij) {
+  return (m_j * f_n) * ((R_i + R_j) * grad_W_ij);
+}
+
+}  // namespace cosph::solid

@@ -1,0 +1,101 @@
+#include "solid_dynamics.hpp"
+
+#include <cmath>
+
+#include "artificial_stress.hpp"
+#include "jaumann_rate.hpp"
+#include "sphcore/kernel.hpp"
+#include "sphcore/pair_terms.hpp"
+#include "sphcore/renormalisation.hpp"
+
+namespace cosph::solid {
+
+namespace kernel = sph::kernel;
+
+namespace {
+
+// f^n, by multiplication for the usual whole n (std::pow costs as much as the
+// rest of the pair term).
+double power(double f, double n) {
+  if (n == 4.0) {
+    const double f2 = f * f;
+    return f2 * f2;
+  }
+  return std::pow(f, n);
+}
+
+}  // namespace
+
+void compute_rates(SolidParticles& P, const sph::CellGrid& grid, const SolidParameters& par) {
+  const long n = static_cast<long>(P.size());
+  const double h = par.h, reach = kernel::kSupport * h, support2 = reach * reach;
+  P.neighbours.resize(P.size());
+
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    const Vec2 x_i = P.x[i], v_i = P.v[i];
+    const double rho_i = P.rho[i];
+    std::vector<Neighbour>& neighbours = P.neighbours[i];
+    neighbours.clear();
+    Mat2 M = Mat2::Zero(), grad_v_raw = Mat2::Zero();
+    double drho_i = 0.0;
+    grid.for_each_candidate_range(x_i, [&](int begin, int end) {
+      for (int j = begin; j < end; ++j) {
+        const Vec2 x_ij = x_i - P.x[j];
+        const double r2 = x_ij.squaredNorm();
+        if (r2 >= support2 || j == i) continue;
+        const double r_ij = std::sqrt(r2);
+        const Vec2 grad_W_ij = kernel::grad_W(x_ij, r_ij, h);
+        neighbours.push_back({j, kernel::W(r_ij, h), grad_W_ij});
+        const double V_j = P.m[j] / P.rho[j];
+        const Vec2 v_ij = v_i - P.v[j];
+        // Continuity (SPEC.md "Solid": as the fluid's, without diffusion).
+        drho_i += rho_i * V_j * v_ij.dot(grad_W_ij);
+        M += sph::renormalisation_term(V_j, grad_W_ij, x_ij);
+        grad_v_raw += (V_j * -v_ij) * grad_W_ij.transpose();
+      }
+    });
+    P.drho[i] = drho_i;
+    // grad_v(a, b) = dv_a/dx_b, exact for a linear velocity field even at the
+    // free surface, where the bending stress of a plate is largest.
+    P.L[i] = sph::renormalisation_matrix(M);
+    const Mat2 grad_v = grad_v_raw * P.L[i].transpose();
+    P.ds[i] = P.failed[i] ? Mat2::Zero() : jaumann_rate(P.G[i], P.s[i], grad_v);
+  }
+}
+
+void compute_accelerations(SolidParticles& P, const SolidParameters& par) {
+  const long n = static_cast<long>(P.size());
+  const double h = par.h;
+  const bool with_artificial_stress = par.artificial_stress.enabled;
+  const double n_exponent = par.artificial_stress.exponent;
+  const double inverse_W_dx = 1.0 / kernel::W(par.dx, h);
+
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    if (P.clamped[i]) {
+      P.a[i] = Vec2::Zero();
+      continue;
+    }
+    const Vec2 x_i = P.x[i], v_i = P.v[i];
+    const double rho_i = P.rho[i], c_i = P.c[i];
+    const Mat2 &sigma_L_i = P.sigma_L[i], &R_i = P.R[i];
+    Vec2 a_i = par.run.gravity + P.external_a[i];
+    for (const Neighbour& neighbour : P.neighbours[i]) {
+      const int j = neighbour.j;
+      const Vec2 x_ij = x_i - P.x[j];
+      const double rho_j = P.rho[j];
+      const double Pi_ij = sph::artificial_viscosity(x_ij, v_i - P.v[j], h, 0.5 * (c_i + P.c[j]),
+                                                     0.5 * (rho_i + rho_j), par.A, par.B);
+      a_i += sph::momentum_pair(P.m[j], sigma_L_i, P.sigma_L[j], rho_i, rho_j, Pi_ij,
+                                neighbour.grad_W_ij);
+      if (with_artificial_stress) {
+        const double f_n = power(neighbour.W_ij * inverse_W_dx, n_exponent);
+        a_i += artificial_stress_pair(P.m[j], f_n, R_i, P.R[j], neighbour.grad_W_ij);
+      }
+    }
+    P.a[i] = a_i;
+  }
+}
+
+}  // namespace cosph::solid

@@ -1,0 +1,34 @@
+// The neighbour passes of one solid step (SPEC.md "Solid", "Momentum").
+//
+// 1. rates: drho/dt from continuity, and ds/dt from the Jaumann rate of the
+//    renormalised velocity gradient.
+// 2. accelerations: dv/dt from the momentum equation with artificial
+//    viscosity and (if on) artificial stress, the one force evaluation.
+// Between them the solver turns rho and s into the stress (update_stress).
+#pragma once
+
+#include "solid_parameters.hpp"
+#include "solid_particles.hpp"
+#include "sphcore/cell_grid.hpp"
+
+namespace cosph::solid {
+
+// Reads x, v, rho, m, s; writes drho, ds (zero for failed particles, whose
+// deviator stays zero), the renormalisation matrix L and the neighbour lists.
+void compute_rates(SolidParticles& particles, const sph::CellGrid& grid,
+                   const SolidParameters& parameters);
+
+// Reads the neighbour lists of compute_rates (the positions must not have
+// moved since), x, v, rho, m, sigma_L, R, c, external_a; writes a (zero for
+// clamped particles).
+//
+// Within the solid the momentum pair term carries sigma L instead of sigma:
+//   dv_i/dt = sum_j m_j ( (sigma_i L_i + sigma_j L_j) / (rho_i rho_j) - Pi_ij I ) . grad_i W_ij
+// (Bonet & Lok 1999). The bracket is still symmetric in i, j, so momentum is
+// conserved exactly, and the stress divergence stays first-order consistent at
+// the free surfaces, where the plain form makes a bending plate too soft: the
+// oscillating plate's period error halves (a deviation from SPEC.md
+// "Momentum", which the coupler's cross-phase term does not share).
+void compute_accelerations(SolidParticles& particles, const SolidParameters& parameters);
+
+}  // namespace cosph::solid

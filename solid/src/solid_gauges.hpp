@@ -1,0 +1,27 @@
+// The solid measurements of timeseries.csv.
+#pragma once
+
+#include <vector>
+
+#include "solid_particles.hpp"
+#include "sphcore/types.hpp"
+
+namespace cosph::solid {
+
+struct SolidGauges {
+  double tip_dx, tip_dy;  // mean displacement of the tip gauge's particles (0 without one)
+  double kinetic_energy;  // per unit depth, J/m
+  double elastic_energy;  // per unit depth, J/m
+  double max_speed;
+  double max_von_mises;
+  long failed;  // failed particles
+};
+
+// The particles a tip gauge at point p follows: those nearest p at the start
+// (several when p lies midway between lattice sites, as a plate's mid-line
+// does with an even number of particles across).
+std::vector<int> tip_gauge_ids(const SolidParticles& particles, const sph::Vec2& p, double dx);
+
+SolidGauges measure(const SolidParticles& particles, const std::vector<int>& tip_ids);
+
+}  // namespace cosph::solid

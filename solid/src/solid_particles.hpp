@@ -1,0 +1,79 @@
+// The solid solver's particles, struct-of-arrays. Clamped particles are part
+// of the body: they carry stress and act on their neighbours, but do not move.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "sphcore/types.hpp"
+
+namespace cosph::solid {
+
+using sph::Mat2;
+using sph::Vec2;
+
+// A neighbour j of particle i, as found by the first pass and reused by the second.
+struct Neighbour {
+  int j;
+  double W_ij;
+  Vec2 grad_W_ij;
+};
+
+struct SolidParticles {
+  // State, carried from step to step (permuted with the neighbour grid).
+  std::vector<int> id;
+  std::vector<Vec2> x, v;
+  std::vector<Vec2> x0;  // initial position (displacements, gauges)
+  std::vector<double> rho, m;
+  std::vector<Mat2> s;          // deviatoric stress
+  std::vector<double> K, G, c;  // material: bulk and shear moduli, P-wave speed
+  std::vector<std::uint8_t> clamped, failed;
+  // Acceleration imposed from outside (the coupler's fluid forces); zero alone.
+  std::vector<Vec2> external_a;
+
+  // Derived each step from the state.
+  std::vector<double> p;                           // pressure P = K (rho/rho0 - 1)
+  std::vector<Mat2> sigma;                         // stress -P I + s (failed: compression only)
+  std::vector<Mat2> R;                             // artificial stress (zero when off)
+  std::vector<Mat2> L;                             // kernel-gradient renormalisation matrix
+  std::vector<Mat2> sigma_L;                       // sigma L, the renormalised momentum flux
+  std::vector<Vec2> a;                             // dv/dt
+  std::vector<double> drho;                        // drho/dt
+  std::vector<Mat2> ds;                            // ds/dt
+  std::vector<std::vector<Neighbour>> neighbours;  // of this step's positions
+
+  std::size_t size() const { return x.size(); }
+
+  void add(int particle_id, const Vec2& position, double density, double mass, double bulk,
+           double shear, double sound_speed, bool is_clamped) {
+    id.push_back(particle_id);
+    x.push_back(position);
+    x0.push_back(position);
+    v.push_back(Vec2::Zero());
+    rho.push_back(density);
+    m.push_back(mass);
+    s.push_back(Mat2::Zero());
+    K.push_back(bulk);
+    G.push_back(shear);
+    c.push_back(sound_speed);
+    clamped.push_back(is_clamped ? 1 : 0);
+    failed.push_back(0);
+    external_a.push_back(Vec2::Zero());
+  }
+
+  // Sizes the derived fields to match the state.
+  void resize_derived() {
+    const std::size_t n = size();
+    p.assign(n, 0.0);
+    sigma.assign(n, Mat2::Zero());
+    R.assign(n, Mat2::Zero());
+    L.assign(n, Mat2::Identity());
+    sigma_L.assign(n, Mat2::Zero());
+    a.assign(n, Vec2::Zero());
+    drho.assign(n, 0.0);
+    ds.assign(n, Mat2::Zero());
+    neighbours.resize(n);
+  }
+};
+
+}  // namespace cosph::solid

@@ -1,0 +1,55 @@
+#include "solid_scene.hpp"
+
+#include <algorithm>
+
+#include "bending_mode.hpp"
+#include "hooke_pressure.hpp"
+#include "sphcore/lattice.hpp"
+
+namespace cosph::solid {
+namespace {
+
+// Young's modulus at x: that of the last weakened region containing it, else the body's.
+double youngs_modulus_at(const Vec2& x, const SolidParameters& p) {
+  double E = p.E;
+  for (const WeakRegion& weak : p.fracture.weakened)
+    if (sph::contains(weak.region, x)) E = weak.E;
+  return E;
+}
+
+double initial_vertical_speed(const Vec2& x, const BendingModeParameters& mode) {
+  const double s = x.x() - mode.root_x;
+  if (s <= 0.0) return 0.0;
+  return mode.tip_speed * cantilever_mode_shape(s, mode.length) /
+         cantilever_mode_shape(mode.length, mode.length);
+}
+
+}  // namespace
+
+SolidParticles build_solid_scene(const sph::CaseFile& case_file, const SolidParameters& p) {
+  const auto& solid = case_file.config.solid();
+  const double mass = p.rho0 * p.dx * p.dx;
+  SolidParticles particles;
+  int next_id = 0;
+  for (const auto& box : solid.body()) {
+    for (const Vec2& x : sph::fill_box(box, p.dx)) {
+      // Overlapping body boxes must not put two particles on one site.
+      const bool taken = std::any_of(particles.x.begin(), particles.x.end(), [&](const Vec2& y) {
+        return (y - x).squaredNorm() < 0.01 * p.dx * p.dx;
+      });
+      if (taken) continue;
+      const bool clamped = std::any_of(solid.clamp().begin(), solid.clamp().end(),
+                                       [&](const auto& clamp) { return sph::contains(clamp, x); });
+      const double E = youngs_modulus_at(x, p);
+      const double K = bulk_modulus(E, p.nu), G = shear_modulus(E, p.nu);
+      particles.add(next_id++, x, p.rho0, mass, K, G, longitudinal_sound_speed(K, G, p.rho0),
+                    clamped);
+      if (p.bending_mode && !clamped)
+        particles.v.back() = Vec2(0.0, initial_vertical_speed(x, *p.bending_mode));
+    }
+  }
+  particles.resize_derived();
+  return particles;
+}
+
+}  // namespace cosph::solid

@@ -1,0 +1,142 @@
+#include "solid_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "artificial_stress.hpp"
+#include "hooke_pressure.hpp"
+#include "solid_dynamics.hpp"
+#include "solid_scene.hpp"
+#include "sphcore/kernel.hpp"
+#include "sphcore/permutation.hpp"
+#include "sphcore/runaway_error.hpp"
+#include "von_mises_failure.hpp"
+
+namespace cosph::solid {
+
+SolidSolver::SolidSolver(const sph::CaseFile& case_file, const SolidParameters& parameters)
+    : parameters_(parameters), particles_(build_solid_scene(case_file, parameters)) {
+  if (parameters_.tip_gauge)
+    tip_ids_ = tip_gauge_ids(particles_, *parameters_.tip_gauge, parameters_.dx);
+  sort_and_find_neighbours();
+  compute_rates(particles_, grid_, parameters_);  // for the renormalisation matrices
+  update_stress();
+  compute_accelerations(particles_, parameters_);
+}
+
+void SolidSolver::sort_and_find_neighbours() {
+  SolidParticles& P = particles_;
+  grid_.build(P.x, sph::kernel::kSupport * parameters_.h);
+  sph::permute(grid_.order(), P.id, P.x, P.v, P.x0, P.rho, P.m, P.s, P.K, P.G, P.c, P.clamped,
+               P.failed, P.external_a);
+}
+
+void SolidSolver::update_stress() {
+  SolidParticles& P = particles_;
+  const SolidParameters& par = parameters_;
+  const long n = static_cast<long>(P.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    P.p[i] = hooke_pressure(P.K[i], P.rho[i], par.rho0);
+    const Mat2 sigma = -P.p[i] * Mat2::Identity() + P.s[i];
+    if (par.fracture.enabled && !P.failed[i] && yields(sigma, par.fracture.yield_stress))
+      P.failed[i] = 1;
+    if (P.failed[i]) P.s[i] = Mat2::Zero();
+    P.sigma[i] = P.failed[i] ? failed_stress(P.p[i]) : sigma;
+    P.sigma_L[i] = P.sigma[i] * P.L[i];
+    P.R[i] = par.artificial_stress.enabled
+                 ? artificial_stress(P.sigma[i], P.rho[i], par.artificial_stress.epsilon)
+                 : Mat2::Zero();
+  }
+}
+
+sph::StepLimits SolidSolver::step_limits() const {
+  const SolidParticles& P = particles_;
+  double v_max2 = 0.0, a_max2 = 0.0, c_max = 0.0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    v_max2 = std::max(v_max2, P.v[i].squaredNorm());
+    a_max2 = std::max(a_max2, P.a[i].squaredNorm());
+    c_max = std::max(c_max, P.c[i]);
+  }
+  return sph::step_limits(parameters_.run.cfl, parameters_.h, c_max, std::sqrt(v_max2),
+                          std::sqrt(a_max2), 0.0);
+}
+
+void SolidSolver::step(double dt) {
+  SolidParticles& P = particles_;
+  const long n = static_cast<long>(P.size());
+  const double half = 0.5 * dt;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    if (P.clamped[i]) continue;
+    P.v[i] += half * P.a[i];
+    P.x[i] += dt * P.v[i];
+  }
+  sort_and_find_neighbours();
+  compute_rates(P, grid_, parameters_);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    P.rho[i] += dt * P.drho[i];
+    P.s[i] += dt * P.ds[i];
+  }
+  update_stress();
+  compute_accelerations(P, parameters_);
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i)
+    if (!P.clamped[i]) P.v[i] += half * P.a[i];
+  time_ += dt;
+  ++steps_;
+  check_state();
+}
+
+void SolidSolver::check_state() const {
+  const SolidParticles& P = particles_;
+  const double rho0 = parameters_.rho0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const char* reason = nullptr;
+    if (!P.x[i].allFinite() || !P.v[i].allFinite() || !std::isfinite(P.rho[i]) ||
+        !P.s[i].allFinite())
+      reason = "its state is not finite";
+    else if (P.v[i].norm() > P.c[i])
+      reason = "it moves faster than the solid's sound speed";
+    else if (P.rho[i] < 0.5 * rho0 || P.rho[i] > 2.0 * rho0)
+      reason = "its density left [0.5, 2] rho0 (far outside linear elasticity)";
+    if (reason == nullptr) continue;
+    std::ostringstream message;
+    message << "solid particle " << P.id[i] << " at (" << P.x[i].x() << ", " << P.x[i].y()
+            << ") m, t = " << time_ << " s, step " << steps_ << ": " << reason << " (speed "
+            << P.v[i].norm() << " m/s, sound speed " << P.c[i] << " m/s, density " << P.rho[i]
+            << " kg/m^3); the run has blown up: try a smaller run.cfl, or turn on "
+               "solid.artificial_stress if the body is under tension";
+    throw sph::RunawayError(message.str());
+  }
+}
+
+sph::Snapshot SolidSolver::snapshot() const {
+  const SolidParticles& P = particles_;
+  const std::size_t n = P.size();
+  std::vector<double> xx(n), xy(n), yy(n), vm(n);
+  std::vector<int> failed(P.failed.begin(), P.failed.end());
+  std::vector<int> clamped(P.clamped.begin(), P.clamped.end());
+  for (std::size_t i = 0; i < n; ++i) {
+    xx[i] = P.sigma[i](0, 0);
+    xy[i] = P.sigma[i](0, 1);
+    yy[i] = P.sigma[i](1, 1);
+    vm[i] = sph::von_mises(P.sigma[i]);
+  }
+  sph::Snapshot snapshot(P.x);
+  snapshot.add_scalar("id", P.id);
+  snapshot.add_vector("velocity", P.v);
+  snapshot.add_scalar("density", P.rho);
+  snapshot.add_scalar("pressure", P.p);
+  snapshot.add_scalar("stress_xx", xx);
+  snapshot.add_scalar("stress_xy", xy);
+  snapshot.add_scalar("stress_yy", yy);
+  snapshot.add_scalar("von_mises", vm);
+  snapshot.add_scalar("failed", failed);
+  snapshot.add_scalar("clamped", clamped);
+  return snapshot;
+}
+
+}  // namespace cosph::solid

@@ -1,0 +1,68 @@
+// What a solver shows the other phase: its particles near the interface, with
+// everything the cross-phase momentum term needs (SPEC.md "Momentum: the
+// coupling rule"). Plain data, so that solver cores know nothing of the
+// transport that carries it.
+#pragma once
+
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "sphcore/types.hpp"
+
+namespace sph {
+
+struct Region {
+  Vec2 min = Vec2::Constant(std::numeric_limits<double>::infinity());
+  Vec2 max = Vec2::Constant(-std::numeric_limits<double>::infinity());
+
+  static Region everything() {
+    const double inf = std::numeric_limits<double>::infinity();
+    return {Vec2(-inf, -inf), Vec2(inf, inf)};
+  }
+  bool empty() const { return !(min.x() <= max.x() && min.y() <= max.y()); }
+  bool contains(const Vec2& p) const {
+    return p.x() >= min.x() && p.x() <= max.x() && p.y() >= min.y() && p.y() <= max.y();
+  }
+  void include(const Vec2& p) {
+    min = min.cwiseMin(p);
+    max = max.cwiseMax(p);
+  }
+  Region grown(double margin) const {
+    if (empty()) return *this;
+    return {min - Vec2::Constant(margin), max + Vec2::Constant(margin)};
+  }
+};
+
+struct InterfaceParticles {
+  std::vector<long> id;
+  std::vector<Vec2> x, v;
+  std::vector<Mat2> sigma;  // full stress tensor, tension positive
+  std::vector<double> m, rho, h, c;
+
+  std::size_t size() const { return x.size(); }
+  void clear() {
+    id.clear(), x.clear(), v.clear(), sigma.clear();
+    m.clear(), rho.clear(), h.clear(), c.clear();
+  }
+  void add(long particle_id, const Vec2& position, const Vec2& velocity, const Mat2& stress,
+           double mass, double density, double smoothing_length, double sound_speed) {
+    id.push_back(particle_id);
+    x.push_back(position);
+    v.push_back(velocity);
+    sigma.push_back(stress);
+    m.push_back(mass);
+    rho.push_back(density);
+    h.push_back(smoothing_length);
+    c.push_back(sound_speed);
+  }
+};
+
+// One measurement of a solver, a column of timeseries.csv.
+struct Gauge {
+  std::string name;
+  std::string unit;
+  double value;
+};
+
+}  // namespace sph

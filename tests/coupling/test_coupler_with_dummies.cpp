@@ -1,0 +1,248 @@
+// The three processes together: cosph-coupler and two cosph-dummy solvers over
+// ipc:// in a scratch folder. A run that ends well (the common step is the
+// smaller proposal, momentum is conserved across the wire, both sides' gauges
+// are recorded), and runs that fail: a solver that dies, hangs, sends garbage,
+// never connects, or speaks another protocol version. Each must end every
+// process with a message that names the reason, within the coupling timeout.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+#include "child_process.hpp"
+#include "participant/protocol.hpp"
+#include "test_support.hpp"
+
+namespace {
+
+using cosph::testing::ChildProcess;
+using cosph::testing::Clock;
+using cosph::testing::ScratchDir;
+using namespace std::chrono_literals;
+
+const std::string kBin = COSPH_BIN_DIR;
+constexpr double kFluidDt = 1e-3, kSolidDt = 1.5e-3, kEndTime = 0.02;
+
+// A CSV file with a header row; columns found by name without the " [unit]".
+struct Table {
+  std::vector<std::string> names;
+  std::vector<std::vector<double>> rows;
+
+  explicit Table(const std::string& path) {
+    std::istringstream text(cosph::testing::read_text(path));
+    std::string line, cell;
+    std::getline(text, line);
+    std::istringstream header(line);
+    while (std::getline(header, cell, ','))
+      names.push_back(cell.substr(0, cell.find(" [")));
+    while (std::getline(text, line)) {
+      std::istringstream row_text(line);
+      std::vector<double>& row = rows.emplace_back();
+      while (std::getline(row_text, cell, ',')) row.push_back(std::stod(cell));
+    }
+  }
+  bool has(const std::string& name) const {
+    return std::find(names.begin(), names.end(), name) != names.end();
+  }
+  double at(std::size_t row, const std::string& name) const {
+    const auto column = std::find(names.begin(), names.end(), name);
+    if (column == names.end()) throw std::runtime_error("no column " + name);
+    return rows.at(row).at(static_cast<std::size_t>(column - names.begin()));
+  }
+};
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+class CouplerWithDummies : public ::testing::Test {
+ protected:
+  void write_case(double timeout) {
+    std::ostringstream text;
+    text << "run { end_time: " << kEndTime << " output_interval: 0.0005 snapshot_interval: 0.02 }\n"
+         << "fluid { spacing: 0.001 }\nsolid { spacing: 0.001 }\n"
+         << "coupling { timeout: " << timeout << " }\n";
+    cosph::testing::write_text(dir_.file("case.pbtxt"), text.str());
+    timeout_ = timeout;
+  }
+  std::string endpoint() const { return "ipc://" + dir_.file("coupler.sock"); }
+  std::string out(const std::string& name) const { return dir_.file("out/" + name); }
+
+  std::unique_ptr<ChildProcess> start_coupler() {
+    return std::make_unique<ChildProcess>(
+        std::vector<std::string>{kBin + "/cosph-coupler", "--case", dir_.file("case.pbtxt"),
+                                 "--out", dir_.file("out"), "--endpoint", endpoint()},
+        dir_.file("coupler"));
+  }
+  std::unique_ptr<ChildProcess> start_dummy(const std::string& phase,
+                                            std::vector<std::string> extra = {}) {
+    std::vector<std::string> argv{kBin + "/cosph-dummy", "--phase",   phase,
+                                  "--endpoint",          endpoint(),  "--out",
+                                  dir_.file("out"),      "--timeout", std::to_string(timeout_),
+                                  "--dt", phase == "fluid" ? "0.001" : "0.0015"};
+    argv.insert(argv.end(), extra.begin(), extra.end());
+    return std::make_unique<ChildProcess>(argv, dir_.file(phase));
+  }
+
+  ScratchDir dir_{"coupling"};
+  double timeout_ = 10.0;
+};
+
+TEST_F(CouplerWithDummies, RunToTheEndWithTheSmallerStepAndBalancedForces) {
+  write_case(5.0);
+  auto coupler = start_coupler();
+  auto fluid = start_dummy("fluid", {"--stress", "1000"});
+  auto solid = start_dummy("solid", {"--stress", "0", "--motion", "-0.01"});
+  const auto deadline = Clock::now() + 15s;
+  ASSERT_EQ(coupler->wait_until(deadline), 0) << coupler->err();
+  ASSERT_EQ(fluid->wait_until(deadline), 0) << fluid->err();
+  ASSERT_EQ(solid->wait_until(deadline), 0) << solid->err();
+
+  // Every step either side was given is the smaller proposal (the last one
+  // may be cut to land on end_time), and the run ends at end_time.
+  const Table fluid_steps(out("dummy_fluid.csv")), solid_steps(out("dummy_solid.csv"));
+  const std::size_t steps = fluid_steps.rows.size();
+  ASSERT_EQ(steps, static_cast<std::size_t>(std::lround(kEndTime / kFluidDt)));
+  ASSERT_EQ(solid_steps.rows.size(), steps);
+  for (std::size_t k = 0; k < steps; ++k)
+    for (const Table* side : {&fluid_steps, &solid_steps}) {
+      EXPECT_NEAR(side->at(k, "dt"), std::min(kFluidDt, kSolidDt), 1e-12) << "step " << k;
+      EXPECT_EQ(side->at(k, "step"), static_cast<double>(k));
+    }
+  EXPECT_NEAR(fluid_steps.at(steps - 1, "t") + fluid_steps.at(steps - 1, "dt"), kEndTime, 1e-12);
+
+  // What each side received balances, step by step; the fluid pushes the solid away.
+  for (std::size_t k = 0; k < steps; ++k) {
+    const double on_fluid = fluid_steps.at(k, "sum_max"), on_solid = solid_steps.at(k, "sum_max");
+    EXPECT_LT(on_fluid, 0.0) << "step " << k;
+    EXPECT_NEAR(on_fluid + on_solid, 0.0, 1e-12 * std::abs(on_fluid)) << "step " << k;
+    EXPECT_NEAR(fluid_steps.at(k, "sum_may") + solid_steps.at(k, "sum_may"), 0.0,
+                1e-12 * std::abs(on_fluid));
+  }
+
+  // The coupler's own record agrees (9 significant digits in the file).
+  const Table coupling(out("coupling.csv"));
+  ASSERT_GE(coupling.rows.size(), steps);
+  for (std::size_t r = 0; r < coupling.rows.size(); ++r) {
+    const double fx = coupling.at(r, "force_on_fluid_x");
+    EXPECT_LT(fx, 0.0) << "row " << r;
+    EXPECT_NEAR(fx + coupling.at(r, "force_on_solid_x"), 0.0, 1e-8 * std::abs(fx)) << "row " << r;
+    EXPECT_NEAR(coupling.at(r, "force_on_fluid_y") + coupling.at(r, "force_on_solid_y"), 0.0,
+                1e-8 * std::abs(fx));
+    EXPECT_GT(coupling.at(r, "pairs"), 0.0) << "row " << r;
+  }
+
+  const Table timeseries(out("timeseries.csv"));
+  for (const char* gauge : {"fluid_force_x", "fluid_steps", "solid_force_x", "solid_steps"})
+    EXPECT_TRUE(timeseries.has(gauge)) << gauge;
+  ASSERT_GE(timeseries.rows.size(), steps);
+  const std::size_t last = timeseries.rows.size() - 1;
+  EXPECT_EQ(timeseries.at(last, "fluid_steps"), timeseries.at(last, "solid_steps"));
+  EXPECT_GT(timeseries.at(last, "solid_force_x"), 0.0);
+}
+
+// Expects every process to have ended by itself before the deadline and been reaped.
+void expect_all_gone(std::initializer_list<ChildProcess*> processes) {
+  for (ChildProcess* process : processes) {
+    EXPECT_TRUE(process->reaped());
+    EXPECT_FALSE(process->exists());
+  }
+}
+
+TEST_F(CouplerWithDummies, ASolverThatDiesEndsTheRunWithItsReason) {
+  write_case(3.0);
+  const auto start = Clock::now();
+  auto coupler = start_coupler();
+  auto fluid = start_dummy("fluid", {"--die-at-step", "5"});
+  auto solid = start_dummy("solid");
+  const auto deadline = start + 10s;
+  const int coupler_code = coupler->wait_until(deadline);
+  const int solid_code = solid->wait_until(deadline);
+  const int fluid_code = fluid->wait_until(deadline);
+  EXPECT_LT(Clock::now() - start, 10s);
+  EXPECT_EQ(fluid_code, 3) << fluid->err();  // the dummy's abrupt exit
+  EXPECT_NE(coupler_code, ChildProcess::kStillRunning);
+  EXPECT_NE(coupler_code, 0);
+  EXPECT_TRUE(contains(coupler->err(), "waiting for the fluid")) << coupler->err();
+  EXPECT_TRUE(contains(coupler->err(), "died")) << coupler->err();
+  EXPECT_NE(solid_code, ChildProcess::kStillRunning);
+  EXPECT_NE(solid_code, 0);
+  // The solid reports the coupler's diagnosis, not a timeout of its own.
+  EXPECT_TRUE(contains(solid->err(), "coupler: step")) << solid->err();
+  EXPECT_TRUE(contains(solid->err(), "waiting for the fluid")) << solid->err();
+  expect_all_gone({coupler.get(), fluid.get(), solid.get()});
+}
+
+TEST_F(CouplerWithDummies, ASolverThatHangsIsTimedOutAndStopsOnSigterm) {
+  write_case(2.0);
+  const auto start = Clock::now();
+  auto coupler = start_coupler();
+  auto fluid = start_dummy("fluid");
+  auto solid = start_dummy("solid", {"--hang-at-step", "4"});
+  const int coupler_code = coupler->wait_until(start + 8s);
+  EXPECT_NE(coupler_code, ChildProcess::kStillRunning);
+  EXPECT_NE(coupler_code, 0);
+  EXPECT_TRUE(contains(coupler->err(), "waiting for the solid")) << coupler->err();
+  const int fluid_code = fluid->wait_until(start + 8s);
+  EXPECT_NE(fluid_code, ChildProcess::kStillRunning);
+  EXPECT_NE(fluid_code, 0);
+  EXPECT_TRUE(contains(fluid->err(), "waiting for the solid")) << fluid->err();
+  // The hung solver is still there; SIGTERM (what the launcher sends) ends it.
+  EXPECT_EQ(solid->wait_until(Clock::now()), ChildProcess::kStillRunning);
+  solid->signal(SIGTERM);
+  const int solid_code = solid->wait_until(Clock::now() + 3s);
+  EXPECT_NE(solid_code, ChildProcess::kStillRunning);
+  EXPECT_NE(solid_code, 0);
+  expect_all_gone({coupler.get(), fluid.get(), solid.get()});
+}
+
+TEST_F(CouplerWithDummies, GarbageFromASolverEndsTheRun) {
+  write_case(3.0);
+  auto coupler = start_coupler();
+  auto fluid = start_dummy("fluid");
+  auto solid = start_dummy("solid", {"--garbage-at-step", "3"});
+  const auto deadline = Clock::now() + 8s;
+  EXPECT_EQ(coupler->wait_until(deadline), 1) << coupler->err();
+  EXPECT_TRUE(contains(coupler->err(), "garbage")) << coupler->err();
+  EXPECT_EQ(fluid->wait_until(deadline), 1) << fluid->err();
+  EXPECT_TRUE(contains(fluid->err(), "garbage")) << fluid->err();
+  EXPECT_EQ(solid->wait_until(deadline), 1) << solid->err();
+  EXPECT_TRUE(contains(solid->err(), "coupler: garbage")) << solid->err();
+  expect_all_gone({coupler.get(), fluid.get(), solid.get()});
+}
+
+TEST_F(CouplerWithDummies, ACouplerWhoseSolversNeverConnectGivesUp) {
+  write_case(2.0);
+  const auto start = Clock::now();
+  auto coupler = start_coupler();
+  const int code = coupler->wait_until(start + 6s);
+  EXPECT_LT(Clock::now() - start, 5s);
+  EXPECT_NE(code, ChildProcess::kStillRunning);
+  EXPECT_NE(code, 0);
+  EXPECT_TRUE(contains(coupler->err(), "waiting for the solvers")) << coupler->err();
+  expect_all_gone({coupler.get()});
+}
+
+TEST_F(CouplerWithDummies, AnotherProtocolVersionIsRefused) {
+  write_case(3.0);
+  auto coupler = start_coupler();
+  auto fluid = start_dummy("fluid", {"--version", "99"});
+  const auto deadline = Clock::now() + 6s;
+  const int fluid_code = fluid->wait_until(deadline);
+  EXPECT_NE(fluid_code, ChildProcess::kStillRunning);
+  EXPECT_NE(fluid_code, 0);
+  // The dummy reports the coupler's refusal, which names both versions.
+  EXPECT_TRUE(contains(fluid->err(), "coupler: protocol version 99")) << fluid->err();
+  EXPECT_TRUE(contains(fluid->err(), "coupler's version " +
+                                         std::to_string(cosph::coupling::kProtocolVersion)))
+      << fluid->err();
+  const int coupler_code = coupler->wait_until(deadline);
+  EXPECT_NE(coupler_code, ChildProcess::kStillRunning);
+  EXPECT_NE(coupler_code, 0);
+  EXPECT_TRUE(contains(coupler->err(), "refused")) << coupler->err();
+  expect_all_gone({coupler.get(), fluid.get()});
+}
+
+}  // namespace

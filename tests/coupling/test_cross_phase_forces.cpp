@@ -1,0 +1,122 @@
+// The cross-phase momentum terms of the coupler (coupler/src/cross_phase_forces):
+// momentum conservation to round-off, the pair range h_f + h_s, and the
+// direction and size of the push of a fluid at pressure P on a solid.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "cross_phase_forces.hpp"
+
+namespace {
+
+using cosph::coupler::compute_cross_phase_forces;
+using cosph::coupler::CrossPhaseForces;
+using cosph::coupler::CrossPhaseParameters;
+using sph::Mat2;
+using sph::Vec2;
+
+constexpr CrossPhaseParameters kDamped{0.05, 0.5};
+
+// n particles scattered over [x0, x0 + width] x [0, width], every field random.
+sph::InterfaceParticles random_cloud(int n, double x0, double width, unsigned seed) {
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  sph::InterfaceParticles P;
+  for (int i = 0; i < n; ++i) {
+    Mat2 sigma;
+    sigma << -1e4 * u(random), 1e3 * (u(random) - 0.5), 1e3 * (u(random) - 0.5), -1e4 * u(random);
+    sigma(1, 0) = sigma(0, 1);
+    P.add(i, Vec2(x0 + width * u(random), width * u(random)),
+          Vec2(u(random) - 0.5, u(random) - 0.5), sigma, 0.5 + u(random), 900.0 + 300.0 * u(random),
+          1e-3 * (1.0 + u(random)), 20.0 + 40.0 * u(random));
+  }
+  return P;
+}
+
+// A dx-spaced block of particles at rest with stress -P I.
+sph::InterfaceParticles block(double x_min, double x_max, double height, double dx, double rho,
+                              double P) {
+  sph::InterfaceParticles out;
+  const long columns = std::lround((x_max - x_min) / dx), rows = std::lround(height / dx);
+  for (long i = 0; i < columns; ++i)
+    for (long j = 0; j < rows; ++j)
+      out.add(i * rows + j, Vec2(x_min + (static_cast<double>(i) + 0.5) * dx,
+                                 (static_cast<double>(j) + 0.5) * dx),
+              Vec2::Zero(), -P * Mat2::Identity(), rho * dx * dx, rho, 1.3 * dx, 20.0);
+  return out;
+}
+
+TEST(CrossPhaseForces, ConserveMomentumToRoundOff) {
+  for (unsigned seed : {1u, 2u, 3u}) {
+    // Overlapping clouds: every kind of pair, approaching and receding.
+    const auto F = random_cloud(300, 0.0, 0.02, seed);
+    const auto S = random_cloud(200, 0.01, 0.02, seed + 100);
+    const CrossPhaseForces out = compute_cross_phase_forces(F, S, kDamped);
+    ASSERT_GT(out.pairs, 100);
+    Vec2 total = Vec2::Zero();
+    double scale = 0.0;
+    for (std::size_t f = 0; f < F.size(); ++f) {
+      total += F.m[f] * out.fluid_a[f];
+      scale += F.m[f] * out.fluid_a[f].norm();
+    }
+    for (std::size_t s = 0; s < S.size(); ++s) {
+      total += S.m[s] * out.solid_a[s];
+      scale += S.m[s] * out.solid_a[s].norm();
+    }
+    ASSERT_GT(scale, 0.0);
+    EXPECT_LT(total.norm(), 1e-12 * scale) << "seed " << seed;
+    EXPECT_LT((out.force_on_fluid + out.force_on_solid).norm(), 1e-12 * scale);
+    EXPECT_GT(out.force_on_fluid.norm(), 1e-6 * scale);  // the check is not 0 = 0
+  }
+}
+
+TEST(CrossPhaseForces, PairsAreThoseWithinTheSumOfSmoothingLengths) {
+  const auto F = random_cloud(250, 0.0, 0.02, 11);
+  const auto S = random_cloud(250, 0.005, 0.02, 12);
+  long expected = 0;
+  for (std::size_t f = 0; f < F.size(); ++f)
+    for (std::size_t s = 0; s < S.size(); ++s)
+      expected += (F.x[f] - S.x[s]).norm() < F.h[f] + S.h[s];
+  EXPECT_EQ(compute_cross_phase_forces(F, S, kDamped).pairs, expected);
+}
+
+// One fluid particle (h = 1 mm) and one solid particle (h = 2 mm): they interact
+// up to r = 3 mm = 2 h_fs, beyond 2 min(h) and short of 2 max(h).
+TEST(CrossPhaseForces, TwoParticlesInteractJustInsideHfPlusHs) {
+  auto pair_at = [](double r) {
+    sph::InterfaceParticles F, S;
+    F.add(0, Vec2(0.0, 0.0), Vec2::Zero(), -1e3 * Mat2::Identity(), 1.0, 1000.0, 1e-3, 20.0);
+    S.add(0, Vec2(r, 0.0), Vec2::Zero(), Mat2::Zero(), 1.0, 1000.0, 2e-3, 20.0);
+    return compute_cross_phase_forces(F, S, kDamped);
+  };
+  for (double r : {2.5e-3, 2.99e-3}) {
+    const CrossPhaseForces out = pair_at(r);
+    EXPECT_EQ(out.pairs, 1) << "r = " << r;
+    EXPECT_LT(out.fluid_a[0].x(), 0.0) << "r = " << r;
+  }
+  for (double r : {3.01e-3, 3.9e-3}) {
+    const CrossPhaseForces out = pair_at(r);
+    EXPECT_EQ(out.pairs, 0) << "r = " << r;
+    EXPECT_EQ(out.fluid_a[0], Vec2::Zero()) << "r = " << r;
+  }
+}
+
+// Water at pressure P left of x = 0 against a stress-free solid at rest right of
+// it, both over 0 <= y <= L. With sigma_s = 0 the pair sum is
+// -P sum_s sum_f V_s V_f grad_s W ~ -P (surface integral of the kernel
+// fraction phi over the solid's boundary) = P L / 2 along +x, phi = 1/2 at the
+// interface. So the solid is pushed away from the fluid by P L / 2.
+TEST(CrossPhaseForces, FluidPressurePushesTheSolidAway) {
+  const double P = 1e4, L = 0.03, dx = 1e-3;
+  const auto F = block(-0.02, 0.0, L, dx, 1000.0, P);
+  const auto S = block(0.0, 0.01, L, dx, 1100.0, 0.0);
+  const CrossPhaseForces out = compute_cross_phase_forces(F, S, kDamped);
+  EXPECT_GT(out.force_on_solid.x(), 0.0);
+  EXPECT_NEAR(out.force_on_solid.x(), 0.5 * P * L, 0.03 * 0.5 * P * L);
+  EXPECT_LT(std::abs(out.force_on_solid.y()), 1e-9 * out.force_on_solid.x());
+  for (std::size_t s = 0; s < S.size(); ++s) EXPECT_GE(out.solid_a[s].x(), 0.0) << "solid " << s;
+  for (std::size_t f = 0; f < F.size(); ++f) EXPECT_LE(out.fluid_a[f].x(), 0.0) << "fluid " << f;
+}
+
+}  // namespace

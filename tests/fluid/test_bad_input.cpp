@@ -1,0 +1,101 @@
+// Bad case files through cosph-fluid (STYLE.md habit 8): one line on stderr
+// naming the file, the field and the reason, and exit code 2 (bad input, as
+// opposed to 1 for a run that failed).
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "fluid_test_support.hpp"
+#include "test_support.hpp"
+
+namespace cosph::fluid {
+namespace {
+
+using cosph::testing::read_text;
+using cosph::testing::ScratchDir;
+using cosph::testing::write_text;
+using testing::run_cosph_fluid;
+
+const std::string kDamBreak = std::string(COSPH_SOURCE_DIR) + "/cases/dam_break.pbtxt";
+
+// The dam-break case with one line (which must be there) replaced.
+std::string dam_break_with(const std::string& line, const std::string& replacement) {
+  std::string text = read_text(kDamBreak);
+  const std::size_t at = text.find(line);
+  EXPECT_NE(at, std::string::npos) << "the dam-break case no longer has: " << line;
+  if (at != std::string::npos) text.replace(at, line.size(), replacement);
+  return text;
+}
+
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+TEST(BadInput, UnknownFieldGivesFileLineAndColumn) {
+  ScratchDir dir("bad_input");
+  const std::string path = dir.file("typo.pbtxt");
+  write_text(path, dam_break_with("  density: 1000", "  densty: 1000"));
+  const auto run = run_cosph_fluid(path, dir.file("out"));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  // "cosph-fluid: error: FILE:LINE:COLUMN: ... "densty"": line 19 of the case.
+  EXPECT_TRUE(contains(run.err, "cosph-fluid: error: " + path + ":19:")) << run.err;
+  EXPECT_TRUE(contains(run.err, "densty")) << run.err;
+}
+
+TEST(BadInput, NegativeSpacingNamesTheField) {
+  ScratchDir dir("bad_input");
+  const auto run = run_cosph_fluid(kDamBreak, dir.file("out"), {"fluid.spacing=-0.008"});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_TRUE(contains(run.err, kDamBreak + ": fluid.spacing: must be positive")) << run.err;
+}
+
+TEST(BadInput, MissingCaseFileNamesThePath) {
+  ScratchDir dir("bad_input");
+  const std::string path = dir.file("no_such_case.pbtxt");
+  const auto run = run_cosph_fluid(path, dir.file("out"));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_TRUE(contains(run.err, path)) << run.err;
+}
+
+TEST(BadInput, UnknownOverrideNamesTheField) {
+  ScratchDir dir("bad_input");
+  const auto run = run_cosph_fluid(kDamBreak, dir.file("out"), {"fluid.spasing=0.004"});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_TRUE(contains(run.err, "spasing")) << run.err;
+}
+
+TEST(BadInput, WallsThatDoNotCloseAreRefused) {
+  ScratchDir dir("bad_input");
+  const std::string path = dir.file("no_right_wall.pbtxt");
+  write_text(path, dam_break_with("  walls { min { x: 0.576 y: 0 } max { x: 0.6 y: 0.4 } }", ""));
+  const auto run = run_cosph_fluid(path, dir.file("out"));
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_TRUE(contains(run.err, path + ": fluid.walls: do not close fluid.water[0]")) << run.err;
+  EXPECT_TRUE(contains(run.err, "to the right")) << run.err;
+}
+
+TEST(BadInput, WallOverlappingTheWaterIsRefused) {
+  ScratchDir dir("bad_input");
+  const auto run = run_cosph_fluid(kDamBreak, dir.file("out"), {"fluid.walls[1].max.x=0.05"});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_TRUE(contains(run.err, "fluid.walls[1]: overlaps fluid.water[0]")) << run.err;
+}
+
+TEST(BadInput, WallThinnerThanTheSupportIsRefused) {
+  // The right wall cut to 10 mm, less than 2h = 20.8 mm.
+  ScratchDir dir("bad_input");
+  const auto run = run_cosph_fluid(kDamBreak, dir.file("out"), {"fluid.walls[2].min.x=0.59"});
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_TRUE(contains(run.err, kDamBreak + ": fluid.walls[2]: is 0.01 m thick")) << run.err;
+  EXPECT_TRUE(contains(run.err, "2h")) << run.err;
+}
+
+TEST(BadInput, MalformedCommandLine) {
+  const std::string binary = std::string(COSPH_BIN_DIR) + "/cosph-fluid";
+  EXPECT_EQ(WEXITSTATUS(std::system(("'" + binary + "' --case 2>/dev/null").c_str())), 2);
+  EXPECT_EQ(WEXITSTATUS(std::system(("'" + binary + "' --bogus x 2>/dev/null").c_str())), 2);
+  EXPECT_EQ(WEXITSTATUS(std::system(("'" + binary + "' --help >/dev/null").c_str())), 0);
+}
+
+}  // namespace
+}  // namespace cosph::fluid

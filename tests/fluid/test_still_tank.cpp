@@ -1,0 +1,111 @@
+// A still tank (SPEC.md "Walls": "a still tank holds hydrostatic pressure" and
+// "no fluid particle crosses a wall"): water 0.4 m wide and H = 0.2 m deep in a
+// closed tank, run for half a second from its hydrostatic start.
+#include <gtest/gtest.h>
+
+#include <omp.h>
+
+#include <cmath>
+
+#include "fluid_parameters.hpp"
+#include "fluid_solver.hpp"
+#include "sphcore/case_file.hpp"
+#include "test_support.hpp"
+
+namespace cosph::fluid {
+namespace {
+
+constexpr double kWidth = 0.4, kDepth = 0.2, kRho0 = 1000.0, kG = 9.81;
+
+constexpr const char* kStillTank = R"(
+title: "Still tank"
+run {
+  end_time: 0.5
+  cfl: 0.25
+  gravity { x: 0 y: -9.81 }
+}
+fluid {
+  spacing: 0.01
+  h_factor: 1.3
+  density: 1000
+  viscosity: 1.307e-3
+  density_diffusion: 0.1
+  artificial_viscosity: 0.02
+  water { min { x: 0 y: 0 } max { x: 0.4 y: 0.2 } }
+  walls { min { x: -0.03 y: -0.03 } max { x: 0.43 y: 0 } }
+  walls { min { x: -0.03 y: 0 } max { x: 0 y: 0.3 } }
+  walls { min { x: 0.4 y: 0 } max { x: 0.43 y: 0.3 } }
+}
+)";
+
+struct BandPressure {
+  double measured = 0.0, hydrostatic = 0.0;
+};
+
+// Mean pressure of the water particles in the bottom band y < 0.05 m, and the
+// mean of rho0 g (H - y) at the same particles.
+BandPressure bottom_band(const FluidParticles& P) {
+  BandPressure band;
+  int count = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (!P.is_water(i) || P.x[i].y() >= 0.05) continue;
+    band.measured += P.p[i];
+    band.hydrostatic += kRho0 * kG * (kDepth - P.x[i].y());
+    ++count;
+  }
+  band.measured /= count;
+  band.hydrostatic /= count;
+  return band;
+}
+
+TEST(StillTank, HoldsHydrostaticPressureAndKeepsEveryParticle) {
+  cosph::testing::ScratchDir dir("still_tank");
+  const std::string path = dir.file("still_tank.pbtxt");
+  cosph::testing::write_text(path, kStillTank);
+  // One thread: the results do not depend on the thread count (each particle
+  // sums its own pairs in a fixed order), and on a shared machine OpenMP's
+  // busy-waiting barriers make two threads ten times slower, not faster.
+  omp_set_num_threads(1);
+  const sph::CaseFile case_file = sph::load_case(path);
+  const FluidParameters parameters = read_fluid_parameters(case_file);
+  FluidSolver solver(case_file, parameters);
+  const long water = solver.gauges().water_particles;
+  ASSERT_EQ(water, 40 * 20);
+
+  // The pressure still rings with the sound waves of the start (period
+  // 4 H / c0 = 0.04 s): average it over the last 0.1 s.
+  const double end_time = 0.5, average_from = 0.4;
+  BandPressure mean;
+  int samples = 0;
+  double next_sample = average_from;
+  while (solver.time() < end_time - 1e-12) {
+    solver.step(std::min(solver.step_limits().smallest(), end_time - solver.time()));
+    if (solver.time() >= next_sample) {
+      const BandPressure band = bottom_band(solver.particles());
+      mean.measured += band.measured;
+      mean.hydrostatic += band.hydrostatic;
+      ++samples;
+      next_sample += 0.005;
+    }
+  }
+  ASSERT_GE(samples, 15);
+  mean.measured /= samples;
+  mean.hydrostatic /= samples;
+  EXPECT_NEAR(mean.measured, mean.hydrostatic, 0.02 * mean.hydrostatic)
+      << "mean pressure over y < 0.05 m";
+
+  // Nothing lost, nothing through a wall: every water particle is inside the
+  // tank's interior, and the water is (nearly) at rest.
+  const FluidParticles& P = solver.particles();
+  EXPECT_EQ(solver.gauges().water_particles, water);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (!P.is_water(i)) continue;
+    EXPECT_TRUE(P.x[i].x() > 0.0 && P.x[i].x() < kWidth && P.x[i].y() > 0.0 &&
+                P.x[i].y() < kDepth + 0.05)
+        << "water particle " << P.id[i] << " at " << P.x[i].transpose();
+  }
+  EXPECT_LT(solver.gauges().max_speed, 0.05 * std::sqrt(kG * kDepth));
+}
+
+}  // namespace
+}  // namespace cosph::fluid

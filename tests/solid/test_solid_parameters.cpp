@@ -1,0 +1,81 @@
+// Bad solid parameters are refused with an error naming the file, the field
+// and the reason; cosph-solid exits 2 for them.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <cstdlib>
+#include <string>
+
+#include "solid_parameters.hpp"
+#include "solid_test_cases.hpp"
+
+namespace cosph::solid {
+namespace {
+
+using testing::plate_case_path;
+
+std::string refusal(const std::vector<std::string>& overrides) {
+  try {
+    read_solid_parameters(sph::load_case(plate_case_path(), overrides));
+  } catch (const sph::ConfigError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(SolidParameters, ThePlateCaseIsValid) {
+  const SolidParameters p = read_solid_parameters(sph::load_case(plate_case_path()));
+  EXPECT_DOUBLE_EQ(p.dx, 0.002);
+  EXPECT_TRUE(p.artificial_stress.enabled);
+  EXPECT_DOUBLE_EQ(p.artificial_stress.epsilon, 0.3);
+  ASSERT_TRUE(p.bending_mode.has_value());
+  ASSERT_TRUE(p.tip_gauge.has_value());
+}
+
+TEST(SolidParameters, IncompressiblePoissonRatioIsRefused) {
+  for (const char* nu : {"0.5", "0.7"}) {
+    const std::string message = refusal({std::string("solid.poisson_ratio=") + nu});
+    EXPECT_NE(message.find("oscillating_plate.pbtxt"), std::string::npos) << message;
+    EXPECT_NE(message.find("solid.poisson_ratio"), std::string::npos) << message;
+    EXPECT_NE(message.find("0.5"), std::string::npos) << message;
+  }
+}
+
+TEST(SolidParameters, NonPositiveYoungsModulusAndDensityAreRefused) {
+  std::string message = refusal({"solid.youngs_modulus=-2e6"});
+  EXPECT_NE(message.find("oscillating_plate.pbtxt"), std::string::npos) << message;
+  EXPECT_NE(message.find("solid.youngs_modulus"), std::string::npos) << message;
+  EXPECT_NE(message.find("positive"), std::string::npos) << message;
+  EXPECT_NE(refusal({"solid.youngs_modulus=0"}).find("solid.youngs_modulus"), std::string::npos);
+  message = refusal({"solid.density=0"});
+  EXPECT_NE(message.find("solid.density"), std::string::npos) << message;
+}
+
+TEST(SolidParameters, OtherBadFieldsAreNamed) {
+  EXPECT_NE(refusal({"solid.spacing=0"}).find("solid.spacing"), std::string::npos);
+  EXPECT_NE(refusal({"solid.artificial_stress.epsilon=-1"}).find("artificial_stress.epsilon"),
+            std::string::npos);
+  EXPECT_NE(refusal({"solid.fracture.enabled=true"}).find("solid.fracture.yield_stress"),
+            std::string::npos);
+  EXPECT_NE(refusal({"solid.initial_velocity.tip_speed=100"}).find("tip_speed"), std::string::npos);
+}
+
+int run_solid(const std::string& arguments) {
+  const std::string command = std::string(COSPH_BIN_DIR) + "/cosph-solid " + arguments +
+                              " > /dev/null 2> " + testing::temporary_path("stderr.txt");
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(CosphSolid, ExitsTwoForBadParameters) {
+  const std::string out = testing::temporary_path("bad_out");
+  EXPECT_EQ(
+      run_solid("--case " + plate_case_path() + " --out " + out + " --set solid.poisson_ratio=0.5"),
+      2);
+  EXPECT_EQ(
+      run_solid("--case " + plate_case_path() + " --out " + out + " --set solid.youngs_modulus=-1"),
+      2);
+}
+
+}  // namespace
+}  // namespace cosph::solid

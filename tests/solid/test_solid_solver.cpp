@@ -1,0 +1,141 @@
+// The solid solver alone: its neighbour passes on an analytic velocity field,
+// failure, the oscillating plate's period (short mode), and a runaway run.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "bending_mode.hpp"
+#include "jaumann_rate.hpp"
+#include "solid_dynamics.hpp"
+#include "solid_solver.hpp"
+#include "solid_test_cases.hpp"
+#include "sphcore/permutation.hpp"
+#include "von_mises_failure.hpp"
+
+namespace cosph::solid {
+namespace {
+
+using testing::plate_case_path;
+
+// The coarse plate's period is 16 % longer than thin-plate theory (measured;
+// the error falls with resolution, see docs/results/oscillating_plate.md):
+// the test guards against regressions beyond that, not the 3 % target.
+constexpr double kCoarsePeriodTolerance = 0.2;
+
+// CFL 1 and a tip speed near the sound speed: the plate tears within 0.01 s.
+const char* kRunawayOverrides =
+    "--set solid.spacing=0.0033333333333333 --set run.cfl=1 --set run.end_time=0.05 "
+    "--set solid.initial_velocity.tip_speed=60";
+
+const char* kBlock = R"(
+run { end_time: 0.01 }
+solid {
+  spacing: 0.01 density: 1000 youngs_modulus: 1e6 poisson_ratio: 0.3
+  body { min { x: 0 y: 0 } max { x: 0.1 y: 0.06 } }
+}
+)";
+
+// A linear velocity field v = A x: every particle, the surface and corners
+// included, must see the gradient A (renormalisation makes it exact) and so
+// the Jaumann rate of A.
+TEST(SolidDynamics, LinearVelocityFieldGivesItsGradientEverywhere) {
+  const sph::CaseFile case_file = sph::load_case(testing::write_case("block", kBlock));
+  const SolidParameters par = read_solid_parameters(case_file);
+  SolidSolver solver(case_file, par);
+  SolidParticles P = solver.particles();
+  sph::CellGrid grid;
+  grid.build(P.x, 2.0 * par.h);
+  sph::permute(grid.order(), P.id, P.x, P.v, P.rho, P.m, P.s, P.G);
+  Mat2 A;
+  A << 0.3, -1.1, 0.7, -0.2;
+  for (std::size_t i = 0; i < P.size(); ++i) P.v[i] = A * P.x[i];
+  compute_rates(P, grid, par);
+  const Mat2 expected = jaumann_rate(par.G, Mat2::Zero(), A);
+  int corners = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    // At a corner a quarter-kernel is too sparse to invert reliably, and the
+    // renormalisation falls back to the identity (sphcore/renormalisation.hpp).
+    const bool corner =
+        (P.x[i].x() < 0.01 || P.x[i].x() > 0.09) && (P.x[i].y() < 0.01 || P.x[i].y() > 0.05);
+    if (corner) {
+      ++corners;
+      continue;
+    }
+    EXPECT_LT((P.ds[i] - expected).norm(), 1e-9 * expected.norm()) << "particle " << P.id[i];
+  }
+  EXPECT_EQ(corners, 4);
+}
+
+// With a tiny yield stress the plate fails at once; failed particles carry
+// their pressure if compressed and nothing else.
+TEST(SolidSolver, FailedParticlesCarryCompressionOnly) {
+  const sph::CaseFile case_file = sph::load_case(
+      plate_case_path(), {"solid.fracture.enabled=true", "solid.fracture.yield_stress=200"});
+  SolidSolver solver(case_file, read_solid_parameters(case_file));
+  for (int k = 0; k < 100; ++k) solver.step(solver.step_limits().smallest());
+  const SolidParticles& P = solver.particles();
+  long failed = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (!P.failed[i]) continue;
+    ++failed;
+    EXPECT_EQ(P.s[i], Mat2::Zero());
+    EXPECT_EQ(P.sigma[i], failed_stress(P.p[i]));
+    EXPECT_LE(P.sigma[i].trace(), 0.0);
+  }
+  EXPECT_GT(failed, 0);
+  EXPECT_EQ(failed, solver.gauges().failed);
+}
+
+// Short mode of scripts/validate_oscillating_plate.py: a coarse plate (6
+// particles across) over one period.
+TEST(OscillatingPlate, CoarsePeriodNearThinPlateTheory) {
+  const sph::CaseFile case_file =
+      sph::load_case(plate_case_path(), {"solid.spacing=0.0033333333333333", "run.end_time=0.3"});
+  const SolidParameters par = read_solid_parameters(case_file);
+  SolidSolver solver(case_file, par);
+  std::vector<double> crossings;
+  double previous_t = 0.0, previous_y = 0.0;
+  while (solver.time() < par.run.end_time) {
+    solver.step(solver.step_limits().smallest());
+    const double y = solver.gauges().tip_dy, t = solver.time();
+    if (previous_t > 0.01 && (y > 0.0) != (previous_y > 0.0))
+      crossings.push_back(previous_t + (t - previous_t) * previous_y / (previous_y - y));
+    previous_t = t;
+    previous_y = y;
+  }
+  ASSERT_GE(crossings.size(), 2u);
+  const double T =
+      2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+  const double T_theory =
+      2.0 * M_PI / cantilever_angular_frequency(par.E, par.nu, par.rho0, 0.02, 0.2);
+  EXPECT_NEAR(T / T_theory, 1.0, kCoarsePeriodTolerance) << "T = " << T << " s";
+  EXPECT_GT(T, T_theory);  // SPH's truncated kernels at the surfaces make the plate softer
+}
+
+// A plate flung at a large fraction of its sound speed blows up; cosph-solid
+// must stop with a clear error (exit 1) and keep the last good state.
+TEST(CosphSolid, RunawayStopsWithLastGoodSnapshot) {
+  const std::string out = testing::temporary_path("runaway");
+  std::filesystem::remove_all(out);
+  const std::string err = testing::temporary_path("runaway_stderr.txt");
+  const std::string command = std::string(COSPH_BIN_DIR) + "/cosph-solid --case " +
+                              plate_case_path() + " --out " + out + " " + kRunawayOverrides +
+                              " > /dev/null 2> " + err;
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  std::stringstream message;
+  message << std::ifstream(err).rdbuf();
+  EXPECT_NE(message.str().find("blown up"), std::string::npos) << message.str();
+  EXPECT_NE(message.str().find("last_good"), std::string::npos) << message.str();
+  EXPECT_TRUE(std::filesystem::exists(out + "/solid_last_good.h5"));
+}
+
+}  // namespace
+}  // namespace cosph::solid
