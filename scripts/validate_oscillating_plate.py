@@ -127,7 +127,11 @@ def write_table(results, T_theory, path):
     text = ("Oscillating plate (Gray, Monaghan & Swift 2001): period of the free end against "
             f"thin-plate theory T = {T_theory:.4f} s, written by "
             "`scripts/validate_oscillating_plate.py` (one thread each).\n\n"
-            + "\n".join(lines) + "\n")
+            + "\n".join(lines) + "\n\n"
+            "Wall times are for one thread each on a shared two-core machine, so other jobs "
+            "running at the same time inflate them. The error falls with resolution at about "
+            "first order in dx/H: the free surfaces (kernel truncation within 2h of the top and "
+            "bottom faces) make the SPH plate softer than thin-plate theory.\n")
     path.write_text(text)
     print(text)
 

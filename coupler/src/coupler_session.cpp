@@ -234,10 +234,19 @@ class Session {
 
   void open_outputs() {
     std::vector<sph::Column> columns{{"t", "s"}, {"dt", "s"}};
+    // A name both sides measure (kinetic_energy, max_speed) gets the side as prefix.
+    auto measured_by = [this](int side, const std::string& name) {
+      for (const auto& gauge : peers_[side].state.gauges())
+        if (gauge.name() == name) return true;
+      return false;
+    };
     for (int side : {kFluid, kSolid}) {
       const auto& gauges = peers_[side].state.gauges();
       for (int g = 0; g < gauges.size(); ++g) {
-        columns.push_back({gauges[g].name(), gauges[g].unit()});
+        const bool shared = measured_by(1 - side, gauges[g].name());
+        columns.push_back({(shared ? std::string(kSideName[side]) + "_" : std::string()) +
+                               gauges[g].name(),
+                           gauges[g].unit()});
         if (side == kFluid && gauges[g].name() == "height") level_ = g;
       }
     }

@@ -16,6 +16,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <thread>
 
 #include "participant/coupled_run.hpp"
@@ -33,8 +34,8 @@ using sph::Vec2;
 struct DummyOptions {
   std::string phase, endpoint, out_dir;
   long particles = 200;
-  double dt = 0.0;      // 0: 1e-3 s for the fluid, 1.5e-3 s for the solid
-  double end = 1.0;     // s, for progress and snapshots only: the coupler ends the run
+  double dt = 0.0;   // 0: 1e-3 s for the fluid, 1.5e-3 s for the solid
+  double end = 1.0;  // s, for progress and snapshots only: the coupler ends the run
   double spacing = 1e-3;
   double motion = 0.0;  // m/s, x velocity
   double stress = -1;   // Pa, pressure P; negative: 1000 Pa for the fluid, 0 for the solid
@@ -50,27 +51,30 @@ const char* kUsage =
 
 DummyOptions parse_options(int argc, char** argv) {
   DummyOptions o;
+  const std::map<std::string, std::string*> texts{
+      {"--phase", &o.phase}, {"--endpoint", &o.endpoint}, {"--out", &o.out_dir}};
+  const std::map<std::string, double*> numbers{
+      {"--dt", &o.dt},         {"--end", &o.end},       {"--spacing", &o.spacing},
+      {"--motion", &o.motion}, {"--stress", &o.stress}, {"--timeout", &o.timeout}};
+  const std::map<std::string, long*> integers{{"--particles", &o.particles},
+                                              {"--die-at-step", &o.die_at},
+                                              {"--hang-at-step", &o.hang_at},
+                                              {"--garbage-at-step", &o.garbage_at},
+                                              {"--version", &o.version}};
   for (int i = 1; i < argc; i += 2) {
     const std::string option = argv[i];
     if (i + 1 >= argc) throw sph::ConfigError(option + " needs a value\n" + kUsage);
     const std::string value = argv[i + 1];
     try {
-      if (option == "--phase") o.phase = value;
-      else if (option == "--endpoint") o.endpoint = value;
-      else if (option == "--out") o.out_dir = value;
-      else if (option == "--particles") o.particles = std::stol(value);
-      else if (option == "--dt") o.dt = std::stod(value);
-      else if (option == "--end") o.end = std::stod(value);
-      else if (option == "--spacing") o.spacing = std::stod(value);
-      else if (option == "--motion") o.motion = std::stod(value);
-      else if (option == "--stress") o.stress = std::stod(value);
-      else if (option == "--timeout") o.timeout = std::stod(value);
-      else if (option == "--die-at-step") o.die_at = std::stol(value);
-      else if (option == "--hang-at-step") o.hang_at = std::stol(value);
-      else if (option == "--garbage-at-step") o.garbage_at = std::stol(value);
-      else if (option == "--version") o.version = std::stol(value);
-      else throw sph::ConfigError("unknown option " + option + "\n" + kUsage);
-    } catch (const std::logic_error&) {  // std::stod and std::stol
+      if (texts.count(option))
+        *texts.at(option) = value;
+      else if (numbers.count(option))
+        *numbers.at(option) = std::stod(value);
+      else if (integers.count(option))
+        *integers.at(option) = std::stol(value);
+      else
+        throw sph::ConfigError("unknown option " + option + "\n" + kUsage);
+    } catch (const std::logic_error&) {  // from std::stod, std::stol
       throw sph::ConfigError(option + ": not a number: " + value);
     }
   }

@@ -32,8 +32,7 @@ Participant::Participant(const std::string& endpoint, double timeout_seconds)
   // always give up first and blame the coupler for a peer that died. The grace
   // lets the coupler, which knows who is missing, report first.
   const double grace = std::max(1.0, 0.25 * timeout_seconds);
-  impl_->timeout =
-      std::chrono::milliseconds(static_cast<long>(1000.0 * (timeout_seconds + grace)));
+  impl_->timeout = std::chrono::milliseconds(static_cast<long>(1000.0 * (timeout_seconds + grace)));
   impl_->endpoint = endpoint;
   impl_->socket.set(zmq::sockopt::linger, 0);  // never hang on exit over unsent messages
   try {

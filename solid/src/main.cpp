@@ -7,6 +7,7 @@
 
 #include "solid_parameters.hpp"
 #include "solid_solver.hpp"
+#include "participant/coupled_run.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/solver_cli.hpp"
 #include "sphcore/standalone_run.hpp"
@@ -20,10 +21,9 @@ int run_solid(int argc, char** argv) {
       argc, argv, "cosph-solid", "SPH linear elastic solid solver (SPEC.md \"Solid\").");
   const sph::CaseFile case_file = sph::load_case(args.case_path, args.overrides);
   const auto parameters = cosph::solid::read_solid_parameters(case_file);
-  if (case_file.config.has_fluid() || !args.endpoint.empty())
-    throw sph::ConfigError(args.case_path +
-                           ": fluid: this case is coupled; coupled runs are not built yet");
-  if (parameters.run.threads > 0) omp_set_num_threads(parameters.run.threads);
+  const bool coupled = !args.endpoint.empty();
+  sph::require(coupled || !case_file.config.has_fluid(), case_file, "fluid",
+               "this case is coupled: run it with coupler/cosph, which starts the coupler");
   sph::make_output_dir(args.out_dir);
   sph::install_stop_handlers();
 
@@ -35,23 +35,24 @@ int run_solid(int argc, char** argv) {
             << " m, c = " << parameters.c0 << " m/s, artificial stress "
             << (parameters.artificial_stress.enabled ? "on" : "off") << ", "
             << omp_get_max_threads() << " threads" << std::endl;
-  sph::StandaloneRun<SolidSolver> run(solver, parameters.run, args.out_dir, "solid",
-                                      {{"tip_dx", "m"},
-                                       {"tip_dy", "m"},
-                                       {"kinetic_energy", "J/m"},
-                                       {"elastic_energy", "J/m"},
-                                       {"max_speed", "m/s"},
-                                       {"max_von_mises", "Pa"},
-                                       {"failed", "1"}},
+  if (coupled) {
+    const double timeout = case_file.config.coupling().timeout() > 0.0
+                               ? case_file.config.coupling().timeout()
+                               : 10.0;
+    cosph::coupling::CoupledRun<SolidSolver> run(
+        solver, parameters.run,
+        {args.out_dir, "solid", cosph::coupling::PhaseKind::solid,
+         "cosph-solid (jaumann)", args.endpoint, timeout});
+    return run.run();
+  }
+  std::vector<sph::Column> columns;
+  for (const sph::Gauge& gauge : solver.gauge_values()) columns.push_back({gauge.name, gauge.unit});
+  sph::StandaloneRun<SolidSolver> run(solver, parameters.run, args.out_dir, "solid", columns,
                                       [](const SolidSolver& s) {
-                                        const auto g = s.gauges();
-                                        return std::vector<double>{g.tip_dx,
-                                                                   g.tip_dy,
-                                                                   g.kinetic_energy,
-                                                                   g.elastic_energy,
-                                                                   g.max_speed,
-                                                                   g.max_von_mises,
-                                                                   static_cast<double>(g.failed)};
+                                        std::vector<double> values;
+                                        for (const auto& gauge : s.gauge_values())
+                                          values.push_back(gauge.value);
+                                        return values;
                                       });
   return run.run();
 }

@@ -80,7 +80,7 @@ void compute_accelerations(SolidParticles& P, const SolidParameters& par) {
     const Vec2 x_i = P.x[i], v_i = P.v[i];
     const double rho_i = P.rho[i], c_i = P.c[i];
     const Mat2 &sigma_L_i = P.sigma_L[i], &R_i = P.R[i];
-    Vec2 a_i = par.run.gravity + P.external_a[i];
+    Vec2 a_i = par.run.gravity;  // the coupling's external_a is added by the kicks
     for (const Neighbour& neighbour : P.neighbours[i]) {
       const int j = neighbour.j;
       const Vec2 x_ij = x_i - P.x[j];

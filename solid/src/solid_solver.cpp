@@ -63,14 +63,14 @@ sph::StepLimits SolidSolver::step_limits() const {
                           std::sqrt(a_max2), 0.0);
 }
 
-void SolidSolver::step(double dt) {
+void SolidSolver::begin_step(double dt) {
   SolidParticles& P = particles_;
   const long n = static_cast<long>(P.size());
   const double half = 0.5 * dt;
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
     if (P.clamped[i]) continue;
-    P.v[i] += half * P.a[i];
+    P.v[i] += half * (P.a[i] + P.external_a[i]);
     P.x[i] += dt * P.v[i];
   }
   sort_and_find_neighbours();
@@ -82,12 +82,53 @@ void SolidSolver::step(double dt) {
   }
   update_stress();
   compute_accelerations(P, parameters_);
+}
+
+void SolidSolver::end_step(double dt) {
+  SolidParticles& P = particles_;
+  const long n = static_cast<long>(P.size());
+  const double half = 0.5 * dt;
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i)
-    if (!P.clamped[i]) P.v[i] += half * P.a[i];
+    if (!P.clamped[i]) P.v[i] += half * (P.a[i] + P.external_a[i]);
   time_ += dt;
   ++steps_;
   check_state();
+}
+
+void SolidSolver::collect_interface(const sph::Region& region, sph::InterfaceParticles& out) {
+  const SolidParticles& P = particles_;
+  out.clear();
+  interface_index_.clear();
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (!region.contains(P.x[i])) continue;
+    interface_index_.push_back(static_cast<long>(i));
+    out.add(P.id[i], P.x[i], P.v[i], P.sigma[i], P.m[i], P.rho[i], parameters_.h, P.c[i]);
+  }
+}
+
+void SolidSolver::set_interface_accelerations(const std::vector<Vec2>& accelerations) {
+  SolidParticles& P = particles_;
+  std::fill(P.external_a.begin(), P.external_a.end(), Vec2::Zero());
+  for (std::size_t k = 0; k < interface_index_.size() && k < accelerations.size(); ++k)
+    P.external_a[interface_index_[k]] = accelerations[k];
+}
+
+sph::Region SolidSolver::interaction_bounds() const {
+  sph::Region bounds;
+  for (const Vec2& x : particles_.x) bounds.include(x);
+  return bounds;
+}
+
+std::vector<sph::Gauge> SolidSolver::gauge_values() const {
+  const SolidGauges g = gauges();
+  return {{"tip_dx", "m", g.tip_dx},
+          {"tip_dy", "m", g.tip_dy},
+          {"kinetic_energy", "J/m", g.kinetic_energy},
+          {"elastic_energy", "J/m", g.elastic_energy},
+          {"max_speed", "m/s", g.max_speed},
+          {"max_von_mises", "Pa", g.max_von_mises},
+          {"failed", "1", static_cast<double>(g.failed)}};
 }
 
 void SolidSolver::check_state() const {

@@ -23,6 +23,7 @@
 #include "solid_particles.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/cell_grid.hpp"
+#include "sphcore/interface_particles.hpp"
 #include "sphcore/snapshot_writer.hpp"
 #include "sphcore/time_step.hpp"
 
@@ -37,13 +38,29 @@ class SolidSolver {
 
   // Advances by dt. Throws sph::RunawayError if the new state is not physical;
   // the particles then hold that bad state.
-  void step(double dt);
+  void step(double dt) {
+    begin_step(dt);
+    end_step(dt);
+  }
+
+  // A coupled step is split where the coupler's answer is needed (as in
+  // FluidSolver): begin_step kicks, drifts and evaluates the solid's own
+  // forces; the coupler's cross-phase accelerations arrive through
+  // set_interface_accelerations; end_step kicks.
+  void begin_step(double dt);
+  void end_step(double dt);
+
+  // The solid particles inside `region` (clamped ones too: water presses on them).
+  void collect_interface(const sph::Region& region, sph::InterfaceParticles& out);
+  // Accelerations for the particles of the last collect_interface, in its order.
+  void set_interface_accelerations(const std::vector<Vec2>& accelerations);
+  sph::Region interaction_bounds() const;
+  double max_smoothing_length() const { return parameters_.h; }
+  std::vector<sph::Gauge> gauge_values() const;
 
   double time() const { return time_; }
   long steps() const { return steps_; }
   const SolidParticles& particles() const { return particles_; }
-  // The coupler's way in: it sets external_a (same order as particles()).
-  SolidParticles& mutable_particles() { return particles_; }
   const SolidParameters& parameters() const { return parameters_; }
   SolidGauges gauges() const { return measure(particles_, tip_ids_); }
   sph::Snapshot snapshot() const;
@@ -53,6 +70,7 @@ class SolidSolver {
   void update_stress();
   void check_state() const;
 
+  std::vector<long> interface_index_;  // particle indices of the last collect_interface
   SolidParameters parameters_;
   SolidParticles particles_;
   std::vector<int> tip_ids_;

@@ -35,8 +35,7 @@ struct Table {
     std::string line, cell;
     std::getline(text, line);
     std::istringstream header(line);
-    while (std::getline(header, cell, ','))
-      names.push_back(cell.substr(0, cell.find(" [")));
+    while (std::getline(header, cell, ',')) names.push_back(cell.substr(0, cell.find(" [")));
     while (std::getline(text, line)) {
       std::istringstream row_text(line);
       std::vector<double>& row = rows.emplace_back();
@@ -78,10 +77,17 @@ class CouplerWithDummies : public ::testing::Test {
   }
   std::unique_ptr<ChildProcess> start_dummy(const std::string& phase,
                                             std::vector<std::string> extra = {}) {
-    std::vector<std::string> argv{kBin + "/cosph-dummy", "--phase",   phase,
-                                  "--endpoint",          endpoint(),  "--out",
-                                  dir_.file("out"),      "--timeout", std::to_string(timeout_),
-                                  "--dt", phase == "fluid" ? "0.001" : "0.0015"};
+    std::vector<std::string> argv{kBin + "/cosph-dummy",
+                                  "--phase",
+                                  phase,
+                                  "--endpoint",
+                                  endpoint(),
+                                  "--out",
+                                  dir_.file("out"),
+                                  "--timeout",
+                                  std::to_string(timeout_),
+                                  "--dt",
+                                  phase == "fluid" ? "0.001" : "0.0015"};
     argv.insert(argv.end(), extra.begin(), extra.end());
     return std::make_unique<ChildProcess>(argv, dir_.file(phase));
   }
@@ -235,8 +241,8 @@ TEST_F(CouplerWithDummies, AnotherProtocolVersionIsRefused) {
   EXPECT_NE(fluid_code, 0);
   // The dummy reports the coupler's refusal, which names both versions.
   EXPECT_TRUE(contains(fluid->err(), "coupler: protocol version 99")) << fluid->err();
-  EXPECT_TRUE(contains(fluid->err(), "coupler's version " +
-                                         std::to_string(cosph::coupling::kProtocolVersion)))
+  EXPECT_TRUE(contains(fluid->err(),
+                       "coupler's version " + std::to_string(cosph::coupling::kProtocolVersion)))
       << fluid->err();
   const int coupler_code = coupler->wait_until(deadline);
   EXPECT_NE(coupler_code, ChildProcess::kStillRunning);

@@ -41,9 +41,10 @@ sph::InterfaceParticles block(double x_min, double x_max, double height, double 
   const long columns = std::lround((x_max - x_min) / dx), rows = std::lround(height / dx);
   for (long i = 0; i < columns; ++i)
     for (long j = 0; j < rows; ++j)
-      out.add(i * rows + j, Vec2(x_min + (static_cast<double>(i) + 0.5) * dx,
-                                 (static_cast<double>(j) + 0.5) * dx),
-              Vec2::Zero(), -P * Mat2::Identity(), rho * dx * dx, rho, 1.3 * dx, 20.0);
+      out.add(
+          i * rows + j,
+          Vec2(x_min + (static_cast<double>(i) + 0.5) * dx, (static_cast<double>(j) + 0.5) * dx),
+          Vec2::Zero(), -P * Mat2::Identity(), rho * dx * dx, rho, 1.3 * dx, 20.0);
   return out;
 }
 

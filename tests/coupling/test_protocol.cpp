@@ -23,8 +23,7 @@ sph::InterfaceParticles random_particles(int n) {
     Mat2 sigma;
     sigma << 1e4 * u(random), 1e3 * u(random), 2e3 * u(random), 1e4 * u(random);
     P.add(1000 + 3 * i, Vec2(u(random), u(random)), Vec2(u(random), u(random)), sigma,
-          1.0 + u(random) * 0.1, 1000.0 + u(random), 1.3e-3 * (1.5 + u(random)),
-          20.0 + u(random));
+          1.0 + u(random) * 0.1, 1000.0 + u(random), 1.3e-3 * (1.5 + u(random)), 20.0 + u(random));
   }
   return P;
 }
@@ -78,7 +77,8 @@ TEST(Protocol, RegionsRoundTripIncludingUnbounded) {
   const sph::Region back = cp::from_proto(cp::to_proto(region));
   EXPECT_EQ(back.min, region.min);
   EXPECT_EQ(back.max, region.max);
-  EXPECT_TRUE(cp::from_proto(cp::to_proto(sph::Region::everything())).contains(Vec2(1e300, -1e300)));
+  EXPECT_TRUE(
+      cp::from_proto(cp::to_proto(sph::Region::everything())).contains(Vec2(1e300, -1e300)));
   EXPECT_TRUE(cp::from_proto(cp::to_proto(sph::Region{})).empty());
 }
 
@@ -110,7 +110,8 @@ TEST(Protocol, MalformedArraysAreRefusedNamingTheField) {
       {"stress", [](cp::InterfaceState& s) { s.mutable_stress()->RemoveLast(); }},
       {"mass", [](cp::InterfaceState& s) { s.add_mass(1.0); }},
       {"density", [](cp::InterfaceState& s) { s.clear_density(); }},
-      {"smoothing_length", [](cp::InterfaceState& s) { s.mutable_smoothing_length()->RemoveLast(); }},
+      {"smoothing_length",
+       [](cp::InterfaceState& s) { s.mutable_smoothing_length()->RemoveLast(); }},
       {"sound_speed", [](cp::InterfaceState& s) { s.add_sound_speed(1.0); }},
   };
   for (const auto& [field, corrupt] : cases) {

@@ -89,9 +89,8 @@ class CoupledRun {
   StepReply exchange(const sph::Region& region, double time, long step) {
     solver_.collect_interface(region, interface_);
     StepReply reply = participant_.exchange(
-        step, time, solver_.step_limits().smallest(),
-        solver_.interaction_bounds(), solver_.max_smoothing_length(), interface_,
-        solver_.gauge_values());
+        step, time, solver_.step_limits().smallest(), solver_.interaction_bounds(),
+        solver_.max_smoothing_length(), interface_, solver_.gauge_values());
     solver_.set_interface_accelerations(reply.acceleration);
     return reply;
   }
