@@ -7,5 +7,5 @@ cd "$(dirname "$0")/.."
 scripts/install_deps.sh
 cmake --preset release
 cmake --build --preset release -j2
-coupler/cosph run dam_break --out out/quickstart
-echo "quickstart: open out/quickstart/fluid.xdmf in ParaView; the front and height are in out/quickstart/timeseries.csv"
+coupler/cosph run elastic_plate --out out/quickstart
+echo "quickstart: open out/quickstart/fluid.xdmf and solid.xdmf in ParaView; tip displacement and water level are in out/quickstart/timeseries.csv"

@@ -94,7 +94,13 @@ class Session {
   void handshake() {
     while (peers_[kFluid].identity.empty() || peers_[kSolid].identity.empty()) {
       const cp::Routed message = await("waiting for the solvers to connect");
-      if (!message.envelope.has_hello()) fail("a peer spoke before its Hello");
+      if (!message.envelope.has_hello()) {
+        // A solver of an earlier run on the same endpoint, still shutting
+        // down, may reach us: not one of ours, so not a reason to stop.
+        std::cerr << "cosph-coupler: ignoring a message from a peer that has not said Hello"
+                  << std::endl;
+        continue;
+      }
       const cp::Hello& hello = message.envelope.hello();
       const int side = hello.phase() == cp::SOLID ? kSolid : kFluid;
       const std::string problem =

@@ -66,6 +66,7 @@ void FluidSolver::begin_step(double dt) {
   for (long i = 0; i < n; ++i)
     if (P.is_water(i)) P.rho[i] += dt * P.drho[i];
   update_pressure_and_accelerations();
+  check_state();  // before the state is shown to anyone, the coupler included
 }
 
 void FluidSolver::end_step(double dt) {

@@ -6,10 +6,9 @@
 
 #include "fluid_parameters.hpp"
 #include "fluid_solver.hpp"
-#include "participant/coupled_run.hpp"
+#include "participant/run_solver.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/solver_cli.hpp"
-#include "sphcore/standalone_run.hpp"
 
 namespace {
 
@@ -34,26 +33,8 @@ int run_fluid(int argc, char** argv) {
             << " m, c0 = " << parameters.c0 << " m/s, " << omp_get_max_threads() << " threads"
             << std::endl;
 
-  if (coupled) {
-    const double timeout = case_file.config.coupling().timeout() > 0.0
-                               ? case_file.config.coupling().timeout()
-                               : 10.0;
-    cosph::coupling::CoupledRun<FluidSolver> run(
-        solver, parameters.run,
-        {args.out_dir, "fluid", cosph::coupling::PhaseKind::fluid, "cosph-fluid (WCSPH)",
-         args.endpoint, timeout});
-    return run.run();
-  }
-  std::vector<sph::Column> columns;
-  for (const sph::Gauge& gauge : solver.gauge_values()) columns.push_back({gauge.name, gauge.unit});
-  sph::StandaloneRun<FluidSolver> run(solver, parameters.run, args.out_dir, "fluid", columns,
-                                      [](const FluidSolver& s) {
-                                        std::vector<double> values;
-                                        for (const auto& gauge : s.gauge_values())
-                                          values.push_back(gauge.value);
-                                        return values;
-                                      });
-  return run.run();
+  return cosph::coupling::run_solver(solver, parameters.run, case_file, args, "fluid",
+                                     cosph::coupling::PhaseKind::fluid, "cosph-fluid (WCSPH)");
 }
 
 }  // namespace

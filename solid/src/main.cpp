@@ -7,10 +7,9 @@
 
 #include "solid_parameters.hpp"
 #include "solid_solver.hpp"
-#include "participant/coupled_run.hpp"
+#include "participant/run_solver.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/solver_cli.hpp"
-#include "sphcore/standalone_run.hpp"
 
 namespace {
 
@@ -28,6 +27,7 @@ int run_solid(int argc, char** argv) {
   sph::install_stop_handlers();
 
   SolidSolver solver(case_file, parameters);
+  omp_set_num_threads(sph::choose_threads(parameters.run.threads, solver.particles().size()));
   long clamped = 0;
   for (auto c : solver.particles().clamped) clamped += c;
   std::cout << "cosph-solid: " << solver.particles().size() << " solid particles (" << clamped
@@ -35,26 +35,8 @@ int run_solid(int argc, char** argv) {
             << " m, c = " << parameters.c0 << " m/s, artificial stress "
             << (parameters.artificial_stress.enabled ? "on" : "off") << ", "
             << omp_get_max_threads() << " threads" << std::endl;
-  if (coupled) {
-    const double timeout = case_file.config.coupling().timeout() > 0.0
-                               ? case_file.config.coupling().timeout()
-                               : 10.0;
-    cosph::coupling::CoupledRun<SolidSolver> run(
-        solver, parameters.run,
-        {args.out_dir, "solid", cosph::coupling::PhaseKind::solid,
-         "cosph-solid (jaumann)", args.endpoint, timeout});
-    return run.run();
-  }
-  std::vector<sph::Column> columns;
-  for (const sph::Gauge& gauge : solver.gauge_values()) columns.push_back({gauge.name, gauge.unit});
-  sph::StandaloneRun<SolidSolver> run(solver, parameters.run, args.out_dir, "solid", columns,
-                                      [](const SolidSolver& s) {
-                                        std::vector<double> values;
-                                        for (const auto& gauge : s.gauge_values())
-                                          values.push_back(gauge.value);
-                                        return values;
-                                      });
-  return run.run();
+  return cosph::coupling::run_solver(solver, parameters.run, case_file, args, "solid",
+                                     cosph::coupling::PhaseKind::solid, "cosph-solid (jaumann)");
 }
 
 }  // namespace

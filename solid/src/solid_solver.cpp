@@ -82,6 +82,7 @@ void SolidSolver::begin_step(double dt) {
   }
   update_stress();
   compute_accelerations(P, parameters_);
+  check_state();  // before the state is shown to anyone, the coupler included
 }
 
 void SolidSolver::end_step(double dt) {

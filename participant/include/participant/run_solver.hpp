@@ -1,0 +1,38 @@
+// What every solver's main() does once its solver is built: run it alone
+// (sph::StandaloneRun, its gauges as the columns of timeseries.csv) or, given
+// an endpoint, in a coupled run (CoupledRun).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "participant/coupled_run.hpp"
+#include "sphcore/case_file.hpp"
+#include "sphcore/solver_cli.hpp"
+#include "sphcore/standalone_run.hpp"
+
+namespace cosph::coupling {
+
+template <class Solver>
+int run_solver(Solver& solver, const sph::RunParameters& run, const sph::CaseFile& case_file,
+               const sph::SolverArgs& args, const std::string& name, PhaseKind phase,
+               const std::string& description) {
+  if (!args.endpoint.empty()) {
+    const double timeout = case_file.config.coupling().timeout() > 0.0
+                               ? case_file.config.coupling().timeout()
+                               : 10.0;
+    CoupledRun<Solver> coupled(solver, run,
+                               {args.out_dir, name, phase, description, args.endpoint, timeout});
+    return coupled.run();
+  }
+  std::vector<sph::Column> columns;
+  for (const sph::Gauge& gauge : solver.gauge_values()) columns.push_back({gauge.name, gauge.unit});
+  sph::StandaloneRun<Solver> alone(solver, run, args.out_dir, name, columns, [](const Solver& s) {
+    std::vector<double> values;
+    for (const sph::Gauge& gauge : s.gauge_values()) values.push_back(gauge.value);
+    return values;
+  });
+  return alone.run();
+}
+
+}  // namespace cosph::coupling
