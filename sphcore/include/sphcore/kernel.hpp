@@ -45,9 +45,11 @@ class GradientFactor {
  public:
   explicit GradientFactor(double h) : inverse_h_(1.0 / h), scale_(normalisation(h) / h) {}
 
+  // Zero at r = 0: two particles squeezed onto one point (water pairing near
+  // the tip of the elastic plate did that) have no direction between them.
   double operator()(double r) const {
     const double s = r * inverse_h_;
-    if (s >= 2.0) return 0.0;
+    if (s >= 2.0 || r <= 0.0) return 0.0;
     const double df = s < 1.0 ? -3.0 * s + 2.25 * s * s : -0.75 * (2.0 - s) * (2.0 - s);
     return scale_ * df / r;
   }
