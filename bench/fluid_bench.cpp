@@ -1,5 +1,6 @@
-// cosph-bench: particle-steps per second of the fluid solver alone, on the
-// dam break at three resolutions, on one thread and on all. Not a test: run
+// cosph-bench: particle-steps per second of the fluid solver alone on the dam
+// break at three resolutions, and of the solid alone on the oscillating plate
+// at two, on one thread and on all. Not a test: run
 //   build/bin/cosph-bench [--steps N] [--quick]
 // It prints a table; scripts/benchmark.py turns it into docs/results/benchmark.md.
 #include <omp.h>
@@ -11,6 +12,8 @@
 
 #include "fluid_parameters.hpp"
 #include "fluid_solver.hpp"
+#include "solid_parameters.hpp"
+#include "solid_solver.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/solver_cli.hpp"
 
@@ -30,6 +33,19 @@ Measurement time_fluid(const std::string& case_path, double spacing, int threads
       sph::load_case(case_path, {"fluid.spacing=" + std::to_string(spacing)});
   FluidSolver solver(case_file, cosph::fluid::read_fluid_parameters(case_file));
   // Warm up (first touch, the collapse starting), then time a fixed number of steps.
+  for (int s = 0; s < steps / 10 + 1; ++s) solver.step(solver.step_limits().smallest());
+  const auto start = std::chrono::steady_clock::now();
+  for (int s = 0; s < steps; ++s) solver.step(solver.step_limits().smallest());
+  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
+  return {static_cast<long>(solver.particles().size()), threads, elapsed.count() / steps};
+}
+
+// The solid on the oscillating plate (Gray et al. 2001) at a given spacing.
+Measurement time_solid(const std::string& case_path, double spacing, int threads, int steps) {
+  omp_set_num_threads(threads);
+  const sph::CaseFile case_file =
+      sph::load_case(case_path, {"solid.spacing=" + std::to_string(spacing)});
+  cosph::solid::SolidSolver solver(case_file, cosph::solid::read_solid_parameters(case_file));
   for (int s = 0; s < steps / 10 + 1; ++s) solver.step(solver.step_limits().smallest());
   const auto start = std::chrono::steady_clock::now();
   for (int s = 0; s < steps; ++s) solver.step(solver.step_limits().smallest());
@@ -66,6 +82,14 @@ int bench(int argc, char** argv) {
     for (int threads : {1, all_threads}) {
       const Measurement m = time_fluid(case_path, spacing, threads, steps);
       std::printf("%-6s %10ld %8d %14.4f %22.4g\n", "fluid", m.particles, m.threads,
+                  1e3 * m.seconds_per_step, static_cast<double>(m.particles) / m.seconds_per_step);
+      std::fflush(stdout);
+    }
+  const std::string plate = std::string(COSPH_SOURCE_DIR) + "/cases/oscillating_plate.pbtxt";
+  for (double spacing : {0.002, 0.001})
+    for (int threads : {1, all_threads}) {
+      const Measurement m = time_solid(plate, spacing, threads, steps);
+      std::printf("%-6s %10ld %8d %14.4f %22.4g\n", "solid", m.particles, m.threads,
                   1e3 * m.seconds_per_step, static_cast<double>(m.particles) / m.seconds_per_step);
       std::fflush(stdout);
     }

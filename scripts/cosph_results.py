@@ -41,6 +41,8 @@ def run_case(case, out_dir, settings=(), timeout=3600):
     result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                             timeout=timeout)
     elapsed = time.monotonic() - start
+    with open(os.path.join(out_dir, "launcher.log"), "w") as log:
+        log.write(result.stdout)
     if result.returncode != 0:
         sys.stderr.write(result.stdout)
         raise RuntimeError(f"{' '.join(command)} failed with exit code {result.returncode}")

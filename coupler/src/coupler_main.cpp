@@ -22,8 +22,8 @@ int run(int argc, char** argv) {
                "the coupler needs an endpoint to bind (ipc://PATH or tcp://HOST:PORT)");
   const auto& coupling = case_file.config.coupling();
   sph::require(coupling.timeout() >= 0.0, case_file, "coupling.timeout", "must not be negative");
-  sph::require(coupling.artificial_viscosity() >= 0.0, case_file,
-               "coupling.artificial_viscosity", "must not be negative");
+  sph::require(coupling.artificial_viscosity() >= 0.0, case_file, "coupling.artificial_viscosity",
+               "must not be negative");
 
   cosph::coupler::CouplerSettings settings;
   settings.endpoint = args.endpoint;
@@ -40,11 +40,10 @@ int run(int argc, char** argv) {
   settings.cross_phase.A = coupling.artificial_viscosity() > 0.0 ? coupling.artificial_viscosity()
                            : solid.artificial_viscosity() > 0.0  ? solid.artificial_viscosity()
                                                                  : 1.0;
-  settings.cross_phase.B = coupling.artificial_viscosity_quadratic() > 0.0
-                               ? coupling.artificial_viscosity_quadratic()
-                           : solid.artificial_viscosity_quadratic() > 0.0
-                               ? solid.artificial_viscosity_quadratic()
-                               : 1.0;
+  settings.cross_phase.B =
+      coupling.artificial_viscosity_quadratic() > 0.0 ? coupling.artificial_viscosity_quadratic()
+      : solid.artificial_viscosity_quadratic() > 0.0  ? solid.artificial_viscosity_quadratic()
+                                                      : 1.0;
   sph::make_output_dir(args.out_dir);
   sph::install_stop_handlers();
   return cosph::coupler::run_coupler(settings);

@@ -103,8 +103,7 @@ class Session {
       }
       const cp::Hello& hello = message.envelope.hello();
       const int side = hello.phase() == cp::SOLID ? kSolid : kFluid;
-      const std::string problem =
-          cp::check_hello(hello, side == kSolid ? cp::SOLID : cp::FLUID);
+      const std::string problem = cp::check_hello(hello, side == kSolid ? cp::SOLID : cp::FLUID);
       if (!problem.empty() || !peers_[side].identity.empty()) {
         const std::string reason =
             problem.empty() ? "a second " + std::string(kSideName[side]) + " solver connected"
@@ -250,9 +249,9 @@ class Session {
       const auto& gauges = peers_[side].state.gauges();
       for (int g = 0; g < gauges.size(); ++g) {
         const bool shared = measured_by(1 - side, gauges[g].name());
-        columns.push_back({(shared ? std::string(kSideName[side]) + "_" : std::string()) +
-                               gauges[g].name(),
-                           gauges[g].unit()});
+        columns.push_back(
+            {(shared ? std::string(kSideName[side]) + "_" : std::string()) + gauges[g].name(),
+             gauges[g].unit()});
         if (side == kFluid && gauges[g].name() == "height") level_ = g;
       }
     }

@@ -18,8 +18,8 @@ CrossPhaseForces compute_cross_phase_forces(const sph::InterfaceParticles& F,
   if (F.size() == 0 || S.size() == 0) return out;
 
   // 2 h_fs = h_f + h_s, so no pair reaches farther than the two largest h.
-  const double range = *std::max_element(F.h.begin(), F.h.end()) +
-                       *std::max_element(S.h.begin(), S.h.end());
+  const double range =
+      *std::max_element(F.h.begin(), F.h.end()) + *std::max_element(S.h.begin(), S.h.end());
   sph::CellGrid grid;
   grid.build(S.x, range);
   const std::vector<int>& order = grid.order();

@@ -18,8 +18,8 @@ struct Participant::Impl {
     auto reply = receive(socket, timeout, "the coupler");
     if (!reply)
       throw CouplingError("the coupler at " + endpoint + " did not answer within " +
-                          std::to_string(static_cast<double>(timeout.count()) / 1000.0) + " s (waiting for " +
-                          expected + ")");
+                          std::to_string(static_cast<double>(timeout.count()) / 1000.0) +
+                          " s (waiting for " + expected + ")");
     if (reply->has_error()) throw CouplingError("coupler: " + reply->error().message());
     return *reply;
   }

@@ -4,9 +4,12 @@ namespace cosph::coupling {
 
 const char* phase_name(Phase phase) {
   switch (phase) {
-    case FLUID: return "fluid";
-    case SOLID: return "solid";
-    default: return "unspecified";
+    case FLUID:
+      return "fluid";
+    case SOLID:
+      return "solid";
+    default:
+      return "unspecified";
   }
 }
 
@@ -90,7 +93,9 @@ std::string check_hello(const Hello& hello, Phase expected) {
   return {};
 }
 
-std::string serialise(const Envelope& envelope) { return envelope.SerializeAsString(); }
+std::string serialise(const Envelope& envelope) {
+  return envelope.SerializeAsString();
+}
 
 Envelope parse(const std::string& bytes, const std::string& from) {
   Envelope envelope;

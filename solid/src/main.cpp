@@ -5,9 +5,9 @@
 
 #include <iostream>
 
+#include "participant/run_solver.hpp"
 #include "solid_parameters.hpp"
 #include "solid_solver.hpp"
-#include "participant/run_solver.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/solver_cli.hpp"
 

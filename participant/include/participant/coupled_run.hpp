@@ -45,8 +45,9 @@ class CoupledRun {
     try {
       return loop();
     } catch (const sph::RunawayError& error) {
-      const std::string message = std::string(error.what()) + ". Last good snapshot: " +
-                                  last_snapshot_ + " (t = " + std::to_string(last_time_) + " s)";
+      const std::string message = std::string(error.what()) +
+                                  ". Last good snapshot: " + last_snapshot_ +
+                                  " (t = " + std::to_string(last_time_) + " s)";
       participant_.report_error(settings_.name + ": " + message);
       throw sph::RunawayError(message);
     } catch (const std::exception& error) {
@@ -57,10 +58,9 @@ class CoupledRun {
 
  private:
   int loop() {
-    sph::Region region =
-        participant_.connect(settings_.phase, settings_.solver_description,
-                             solver_.particles().size(), solver_.max_smoothing_length(),
-                             solver_.interaction_bounds());
+    sph::Region region = participant_.connect(
+        settings_.phase, settings_.solver_description, solver_.particles().size(),
+        solver_.max_smoothing_length(), solver_.interaction_bounds());
     sph::ProgressReporter progress(run_.end_time);
     StepReply reply = exchange(region, solver_.time(), solver_.steps());
     double next_snapshot = 0.0;

@@ -15,10 +15,10 @@ namespace cosph::coupling {
 enum class PhaseKind { fluid, solid };
 
 struct StepReply {
-  double dt;                              // the common step to take next
-  std::vector<sph::Vec2> acceleration;    // per particle sent, in the order sent
-  sph::Region send_region;                // where to send particles from next time
-  bool stop;                              // the run is over
+  double dt;                            // the common step to take next
+  std::vector<sph::Vec2> acceleration;  // per particle sent, in the order sent
+  sph::Region send_region;              // where to send particles from next time
+  bool stop;                            // the run is over
 };
 
 class Participant {

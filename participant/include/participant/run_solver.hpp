@@ -18,9 +18,8 @@ int run_solver(Solver& solver, const sph::RunParameters& run, const sph::CaseFil
                const sph::SolverArgs& args, const std::string& name, PhaseKind phase,
                const std::string& description) {
   if (!args.endpoint.empty()) {
-    const double timeout = case_file.config.coupling().timeout() > 0.0
-                               ? case_file.config.coupling().timeout()
-                               : 10.0;
+    const double timeout =
+        case_file.config.coupling().timeout() > 0.0 ? case_file.config.coupling().timeout() : 10.0;
     CoupledRun<Solver> coupled(solver, run,
                                {args.out_dir, name, phase, description, args.endpoint, timeout});
     return coupled.run();
