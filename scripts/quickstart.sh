@@ -7,5 +7,8 @@ cd "$(dirname "$0")/.."
 scripts/install_deps.sh
 cmake --preset release
 cmake --build --preset release -j2
-coupler/cosph run elastic_plate --out out/quickstart
+# The plate case stops with a clear error at t = 0.30 s of its 0.4 s (README,
+# "Where it breaks now"): the quickstart runs its first 0.25 s.
+echo "quickstart: running the coupled elastic plate to t = 0.25 s (see README for why not 0.4 s)"
+coupler/cosph run elastic_plate --out out/quickstart --set run.end_time=0.25
 echo "quickstart: open out/quickstart/fluid.xdmf and solid.xdmf in ParaView; tip displacement and water level are in out/quickstart/timeseries.csv"
