@@ -131,7 +131,7 @@ TEST(Protocol, NonPositiveMassIsRefused) {
 }
 
 TEST(Protocol, GarbageBytesAreRefusedNamingTheSender) {
-  const std::string garbage("\xff\xff\xff not a message", 20);
+  const std::string garbage = "\xff\xff\xff not a message";
   const std::string message = error_of([&] { cp::parse(garbage, "the fluid"); });
   EXPECT_NE(message.find("garbage from the fluid"), std::string::npos) << message;
   // Zero bytes parse as an empty Envelope: no body, refused too.
