@@ -94,10 +94,7 @@ void FluidSolver::collect_interface(const sph::Region& region, sph::InterfacePar
 }
 
 void FluidSolver::set_interface_accelerations(const std::vector<Vec2>& accelerations) {
-  FluidParticles& P = particles_;
-  std::fill(P.external_a.begin(), P.external_a.end(), Vec2::Zero());
-  for (std::size_t k = 0; k < interface_index_.size() && k < accelerations.size(); ++k)
-    P.external_a[interface_index_[k]] = accelerations[k];
+  sph::scatter_interface_accelerations(interface_index_, accelerations, particles_.external_a);
 }
 
 sph::Region FluidSolver::interaction_bounds() const {

@@ -109,10 +109,7 @@ void SolidSolver::collect_interface(const sph::Region& region, sph::InterfacePar
 }
 
 void SolidSolver::set_interface_accelerations(const std::vector<Vec2>& accelerations) {
-  SolidParticles& P = particles_;
-  std::fill(P.external_a.begin(), P.external_a.end(), Vec2::Zero());
-  for (std::size_t k = 0; k < interface_index_.size() && k < accelerations.size(); ++k)
-    P.external_a[interface_index_[k]] = accelerations[k];
+  sph::scatter_interface_accelerations(interface_index_, accelerations, particles_.external_a);
 }
 
 sph::Region SolidSolver::interaction_bounds() const {

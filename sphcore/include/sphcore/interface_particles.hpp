@@ -4,6 +4,7 @@
 // transport that carries it.
 #pragma once
 
+#include <algorithm>
 #include <limits>
 #include <string>
 #include <vector>
@@ -57,6 +58,16 @@ struct InterfaceParticles {
     c.push_back(sound_speed);
   }
 };
+
+// Hands the coupler's accelerations, given in the order of the particles a
+// solver sent (their indices in `sent`), to its external_a; the rest get none.
+inline void scatter_interface_accelerations(const std::vector<long>& sent,
+                                            const std::vector<Vec2>& accelerations,
+                                            std::vector<Vec2>& external_a) {
+  std::fill(external_a.begin(), external_a.end(), Vec2::Zero());
+  for (std::size_t k = 0; k < sent.size() && k < accelerations.size(); ++k)
+    external_a[sent[k]] = accelerations[k];
+}
 
 // One measurement of a solver, a column of timeseries.csv.
 struct Gauge {
