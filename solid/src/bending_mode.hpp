@@ -1,8 +1,12 @@
 // First bending mode of a clamped-free (cantilever) beam, the initial velocity
 // profile of Gray, Monaghan & Swift 2001 sec. 6:
-//   f(s) = (cos ks - cosh ks) - (cos kL - cosh kL)/(sin kL + sinh kL) (sin ks - sinh ks)
+//   f(s) = (cosh ks - cos ks) - sigma (sinh ks - sin ks),
+//   sigma = (sinh kL - sin kL) / (cosh kL + cos kL)
 // with kL = 1.875 (the first root of cos kL cosh kL = -1). f(0) = f'(0) = 0 at
-// the clamp; f(L) is the tip deflection of the mode.
+// the clamp, f''(L) = f'''(L) = 0 at the free end (no moment, no shear force);
+// f(L) = 2 is the tip deflection of the mode. (Until issue 7 sigma read
+// -(cos kL - cosh kL) / (sin kL + sinh kL) with the other signs: not a mode,
+// with a bending moment at the free end, which started a mix of modes.)
 #pragma once
 
 #include <cmath>
@@ -13,8 +17,8 @@ inline constexpr double kFirstModeKL = 1.875;
 
 inline double cantilever_mode_shape(double s, double L) {
   const double k = kFirstModeKL / L, kL = kFirstModeKL;
-  const double ratio = (std::cos(kL) - std::cosh(kL)) / (std::sin(kL) + std::sinh(kL));
-  return (std::cos(k * s) - std::cosh(k * s)) - ratio * (std::sin(k * s) - std::sinh(k * s));
+  const double sigma = (std::sinh(kL) - std::sin(kL)) / (std::cosh(kL) + std::cos(kL));
+  return (std::cosh(k * s) - std::cos(k * s)) - sigma * (std::sinh(k * s) - std::sin(k * s));
 }
 
 // Thin-plate (plane-strain) angular frequency of the first mode:
