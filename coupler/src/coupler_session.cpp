@@ -198,6 +198,8 @@ class Session {
         s.add_acceleration(acceleration.x());
         s.add_acceleration(acceleration.y());
       }
+      if (side == kFluid)
+        s.mutable_density_rate()->Add(forces.fluid_drho.begin(), forces.fluid_drho.end());
       *s.mutable_send_region() = cp::to_proto(send_region(side));
       try {
         cp::send_to(socket_, peers_[side].identity, reply);

@@ -6,24 +6,27 @@
 #include "sphcore/cell_grid.hpp"
 #include "sphcore/kernel.hpp"
 #include "sphcore/pair_terms.hpp"
+#include "sphcore/wall_pressure.hpp"
 
 namespace cosph::coupler {
 
-CrossPhaseForces compute_cross_phase_forces(const sph::InterfaceParticles& F,
-                                            const sph::InterfaceParticles& S,
-                                            const CrossPhaseParameters& par) {
-  CrossPhaseForces out;
-  out.fluid_a.assign(F.size(), Vec2::Zero());
-  out.solid_a.assign(S.size(), Vec2::Zero());
-  if (F.size() == 0 || S.size() == 0) return out;
+namespace {
 
+struct Pair {
+  int f, s;
+  Vec2 x_fs;  // x_f - x_s
+  double h_fs, W_fs;
+  Vec2 grad_W;  // grad_f W_fs
+};
+
+std::vector<Pair> find_pairs(const sph::InterfaceParticles& F, const sph::InterfaceParticles& S) {
+  std::vector<Pair> pairs;
   // 2 h_fs = h_f + h_s, so no pair reaches farther than the two largest h.
   const double range =
       *std::max_element(F.h.begin(), F.h.end()) + *std::max_element(S.h.begin(), S.h.end());
   sph::CellGrid grid;
   grid.build(S.x, range);
   const std::vector<int>& order = grid.order();
-
   for (std::size_t f = 0; f < F.size(); ++f) {
     const Vec2 x_f = F.x[f];
     grid.for_each_candidate_range(x_f, [&](int begin, int end) {
@@ -34,19 +37,72 @@ CrossPhaseForces compute_cross_phase_forces(const sph::InterfaceParticles& F,
         const double r2 = x_fs.squaredNorm();
         if (r2 >= reach * reach || r2 == 0.0) continue;
         const double h_fs = 0.5 * reach, r = std::sqrt(r2);
-        const Vec2 grad_W = sph::kernel::grad_W(x_fs, r, h_fs);
-        const double Pi_fs =
-            sph::artificial_viscosity(x_fs, F.v[f] - S.v[s], h_fs, 0.5 * (F.c[f] + S.c[s]),
-                                      0.5 * (F.rho[f] + S.rho[s]), par.A, par.B);
-        const Vec2 a_f =
-            sph::momentum_pair(S.m[s], F.sigma[f], S.sigma[s], F.rho[f], S.rho[s], Pi_fs, grad_W);
-        const Vec2 force = F.m[f] * a_f;  // on f, from s
-        out.fluid_a[f] += a_f;
-        out.solid_a[s] -= force / S.m[s];
-        ++out.pairs;
+        pairs.push_back({static_cast<int>(f), s, x_fs, h_fs, sph::kernel::W(r, h_fs),
+                         sph::kernel::grad_W(x_fs, r, h_fs)});
       }
     });
   }
+  return pairs;
+}
+
+void add_stress_sum(const sph::InterfaceParticles& F, const sph::InterfaceParticles& S,
+                    const std::vector<Pair>& pairs, const CrossPhaseParameters& par,
+                    CrossPhaseForces& out) {
+  for (const Pair& p : pairs) {
+    const double Pi_fs =
+        sph::artificial_viscosity(p.x_fs, F.v[p.f] - S.v[p.s], p.h_fs, 0.5 * (F.c[p.f] + S.c[p.s]),
+                                  0.5 * (F.rho[p.f] + S.rho[p.s]), par.A, par.B);
+    const Vec2 a_f = sph::momentum_pair(S.m[p.s], F.sigma[p.f], S.sigma[p.s], F.rho[p.f],
+                                        S.rho[p.s], Pi_fs, p.grad_W);
+    out.fluid_a[p.f] += a_f;
+    out.solid_a[p.s] -= (F.m[p.f] * a_f) / S.m[p.s];
+  }
+}
+
+void add_moving_wall(const sph::InterfaceParticles& F, const sph::InterfaceParticles& S,
+                     const std::vector<Pair>& pairs, const CrossPhaseParameters& par,
+                     CrossPhaseForces& out) {
+  std::vector<sph::WallPressureSum> sums(S.size());
+  for (const Pair& p : pairs)
+    sums[p.s].add(-0.5 * F.sigma[p.f].trace(), F.rho[p.f], -p.x_fs, p.W_fs);
+  // The solid's own acceleration is not known here; the wall's pressure has
+  // the hydrostatic part only (a_w = 0, as for the fluid's fixed walls).
+  std::vector<double> P_w(S.size());
+  for (std::size_t s = 0; s < S.size(); ++s) P_w[s] = sums[s].wall_pressure(par.gravity);
+
+  for (const Pair& p : pairs) {
+    const double rho_f = F.rho[p.f], V_s = S.m[p.s] / S.rho[p.s];
+    const Vec2 v_fs = F.v[p.f] - S.v[p.s];
+    const double Pi_fs =
+        sph::artificial_viscosity(p.x_fs, v_fs, p.h_fs, F.c[p.f], rho_f, par.A, par.B);
+    // The wall particle has the water's density and the solid particle's volume.
+    const Vec2 a_f =
+        sph::momentum_pair(V_s * rho_f, F.sigma[p.f], -P_w[p.s] * sph::Mat2::Identity(), rho_f,
+                           rho_f, Pi_fs, p.grad_W);
+    out.fluid_a[p.f] += a_f;
+    out.solid_a[p.s] -= (F.m[p.f] * a_f) / S.m[p.s];
+    out.fluid_drho[p.f] += sph::continuity_pair(rho_f, V_s, v_fs, p.grad_W);
+  }
+}
+
+}  // namespace
+
+CrossPhaseForces compute_cross_phase_forces(const sph::InterfaceParticles& F,
+                                            const sph::InterfaceParticles& S,
+                                            const CrossPhaseParameters& par) {
+  CrossPhaseForces out;
+  out.fluid_a.assign(F.size(), Vec2::Zero());
+  out.solid_a.assign(S.size(), Vec2::Zero());
+  if (par.model == InterfaceModel::moving_wall) out.fluid_drho.assign(F.size(), 0.0);
+  if (F.size() == 0 || S.size() == 0) return out;
+
+  const std::vector<Pair> pairs = find_pairs(F, S);
+  out.pairs = static_cast<long>(pairs.size());
+  if (par.model == InterfaceModel::stress_sum)
+    add_stress_sum(F, S, pairs, par, out);
+  else
+    add_moving_wall(F, S, pairs, par, out);
+
   // The totals the solvers will feel, summed from what they are sent: that
   // they cancel is a check, not an identity.
   for (std::size_t f = 0; f < F.size(); ++f) out.force_on_fluid += F.m[f] * out.fluid_a[f];

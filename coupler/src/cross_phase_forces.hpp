@@ -1,10 +1,21 @@
-// The cross-phase terms of the momentum equation (SPEC.md "Momentum: the
-// coupling rule"), computed once per fluid-solid pair:
-//   m_f a_f += m_f m_s ( (sigma_f + sigma_s) / (rho_f rho_s) - Pi_fs I ) . grad_f W_fs
-//   m_s a_s -= the same
-// over pairs with r_fs < 2 h_fs, h_fs = (h_f + h_s) / 2. The same pair terms as
-// inside each phase (sphcore/pair_terms.hpp), so a fluid-solid pair is no
-// different from any other, and the exchange conserves momentum.
+// The cross-phase terms, computed once per fluid-solid pair (r_fs < 2 h_fs,
+// h_fs = (h_f + h_s) / 2) and shared equal and opposite, so the exchange
+// conserves momentum. Two interface models (case field coupling.interface):
+//
+// stress_sum, the study's rule (SPEC.md "Momentum: the coupling rule"): the
+// momentum sum runs over both phases with each particle's own stress,
+//   m_f a_f += m_f m_s ( (sigma_f + sigma_s) / (rho_f rho_s) - Pi_fs I ) . grad_f W_fs,
+// the same pair term as inside each phase (sphcore/pair_terms.hpp).
+//
+// moving_wall: the water sees each solid particle as a moving wall particle
+// of the solid's volume V_s = m_s / rho_s, as it sees its own walls (Adami,
+// Hu & Adams 2012): pressure P_w extrapolated from the water around it
+// (sphcore/wall_pressure.hpp), and a share in the water's continuity,
+//   a_f     += V_s ( (sigma_f - P_w I) / rho_f - rho_f Pi_fs I ) . grad_f W_fs
+//   drho_f  += rho_f V_s (v_f - v_s) . grad_f W_fs.
+// The solid then feels the water's pressure, not its own stress: the bending
+// stress along a plate (hundreds of times the water pressure) never enters the
+// water's momentum, where its discretisation noise tore the water apart.
 #pragma once
 
 #include <vector>
@@ -15,14 +26,19 @@ namespace cosph::coupler {
 
 using sph::Vec2;
 
+enum class InterfaceModel { stress_sum, moving_wall };
+
 struct CrossPhaseParameters {
-  double A;  // Monaghan artificial viscosity, linear
-  double B;  // and quadratic
+  InterfaceModel model = InterfaceModel::moving_wall;
+  double A = 0.02;              // Monaghan artificial viscosity, linear
+  double B = 0.0;               // and quadratic
+  Vec2 gravity = Vec2::Zero();  // moving_wall: the hydrostatic part of P_w
 };
 
 struct CrossPhaseForces {
-  std::vector<Vec2> fluid_a;  // per fluid interface particle
-  std::vector<Vec2> solid_a;  // per solid interface particle
+  std::vector<Vec2> fluid_a;       // per fluid interface particle
+  std::vector<Vec2> solid_a;       // per solid interface particle
+  std::vector<double> fluid_drho;  // moving_wall only (empty otherwise), kg/m^3/s
   long pairs = 0;
   Vec2 force_on_fluid = Vec2::Zero();  // sum m a, N/m
   Vec2 force_on_solid = Vec2::Zero();

@@ -7,15 +7,12 @@
 // it does not smear the hydrostatic profile.
 #pragma once
 
-#include "sphcore/types.hpp"
+#include "sphcore/pair_terms.hpp"
 
 namespace cosph::fluid {
 
+using sph::continuity_pair;
 using sph::Vec2;
-
-inline double continuity_pair(double rho_i, double V_j, const Vec2& v_ij, const Vec2& grad_W_ij) {
-  return rho_i * V_j * v_ij.dot(grad_W_ij);
-}
 
 // One pair's share of the diffusion sum, without the factor delta h c0 that is
 // the same for every pair. With grad_i W_ij = F_ij x_ij (F_ij = W'(r)/r), the

@@ -7,8 +7,8 @@
 #include "sphcore/kernel.hpp"
 #include "sphcore/pair_terms.hpp"
 #include "sphcore/renormalisation.hpp"
+#include "sphcore/wall_pressure.hpp"
 #include "viscous_stress.hpp"
-#include "wall_pressure.hpp"
 
 namespace cosph::fluid {
 
@@ -85,7 +85,7 @@ void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid, const F
   for (long w = 0; w < n; ++w) {
     if (P.is_water(w)) continue;
     const Vec2 x_w = P.x[w];
-    WallPressureSum sum;
+    sph::WallPressureSum sum;
     grid.for_each_candidate_range(x_w, [&](int begin, int end) {
       for (int f = begin; f < end; ++f) {
         if (!P.is_water(f)) continue;

@@ -26,13 +26,14 @@ struct FluidParticles {
   std::vector<Vec2> grad_rho;
 
   // Derived each step from the state.
-  std::vector<double> p;            // pressure (walls: extrapolated from the water)
-  std::vector<Mat2> tau;            // viscous stress
-  std::vector<Vec2> grad_rho_next;  // being computed
-  std::vector<double> volume;       // m / rho, once per particle rather than per pair
-  std::vector<Vec2> a;              // dv/dt
-  std::vector<double> drho;         // drho/dt
-  std::vector<Vec2> external_a;     // acceleration from outside the fluid (coupling)
+  std::vector<double> p;              // pressure (walls: extrapolated from the water)
+  std::vector<Mat2> tau;              // viscous stress
+  std::vector<Vec2> grad_rho_next;    // being computed
+  std::vector<double> volume;         // m / rho, once per particle rather than per pair
+  std::vector<Vec2> a;                // dv/dt
+  std::vector<double> drho;           // drho/dt
+  std::vector<Vec2> external_a;       // acceleration from outside the fluid (coupling)
+  std::vector<double> external_drho;  // density rate from outside (a moving solid wall)
 
   std::size_t size() const { return x.size(); }
   bool is_water(std::size_t i) const { return kind[i] == Kind::water; }
@@ -56,6 +57,7 @@ struct FluidParticles {
     a.assign(n, Vec2::Zero());
     drho.assign(n, 0.0);
     external_a.assign(n, Vec2::Zero());
+    external_drho.assign(n, 0.0);
   }
 };
 

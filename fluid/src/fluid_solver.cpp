@@ -75,7 +75,12 @@ void FluidSolver::end_step(double dt) {
   const double half = 0.5 * dt;
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i)
-    if (P.is_water(i)) P.v[i] += half * (P.a[i] + P.external_a[i]);
+    if (P.is_water(i)) {
+      P.v[i] += half * (P.a[i] + P.external_a[i]);
+      // Computed by the coupler at the same positions as this step's drho,
+      // after the pressure was taken from rho: it acts from the next step on.
+      P.rho[i] += dt * P.external_drho[i];
+    }
   time_ += dt;
   ++steps_;
   check_state();
@@ -95,6 +100,10 @@ void FluidSolver::collect_interface(const sph::Region& region, sph::InterfacePar
 
 void FluidSolver::set_interface_accelerations(const std::vector<Vec2>& accelerations) {
   sph::scatter_interface_accelerations(interface_index_, accelerations, particles_.external_a);
+}
+
+void FluidSolver::set_interface_density_rates(const std::vector<double>& density_rates) {
+  sph::scatter_interface_values(interface_index_, density_rates, 0.0, particles_.external_drho);
 }
 
 sph::Region FluidSolver::interaction_bounds() const {

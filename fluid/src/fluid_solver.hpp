@@ -50,6 +50,8 @@ class FluidSolver {
   // Accelerations for the particles of the last collect_interface, in its
   // order; every other particle gets none.
   void set_interface_accelerations(const std::vector<Vec2>& accelerations);
+  // The same for the solid's share in the water's continuity (moving walls).
+  void set_interface_density_rates(const std::vector<double>& density_rates);
   // Where water is (the box around every water particle).
   sph::Region interaction_bounds() const;
   double max_smoothing_length() const { return parameters_.h; }

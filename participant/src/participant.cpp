@@ -88,10 +88,15 @@ StepReply Participant::exchange(long step, double time, double proposed_dt,
   if (!s.stop() && s.acceleration_size() != 2 * static_cast<int>(particles.size()))
     throw CouplingError("the coupler sent " + std::to_string(s.acceleration_size() / 2) +
                         " accelerations for " + std::to_string(particles.size()) + " particles");
-  StepReply out{s.dt(), {}, from_proto(s.send_region()), s.stop()};
+  if (!s.stop() && s.density_rate_size() != 0 &&
+      s.density_rate_size() != static_cast<int>(particles.size()))
+    throw CouplingError("the coupler sent " + std::to_string(s.density_rate_size()) +
+                        " density rates for " + std::to_string(particles.size()) + " particles");
+  StepReply out{s.dt(), {}, {}, from_proto(s.send_region()), s.stop()};
   out.acceleration.reserve(particles.size());
   for (int k = 0; k + 1 < s.acceleration_size(); k += 2)
     out.acceleration.emplace_back(s.acceleration(k), s.acceleration(k + 1));
+  out.density_rate.assign(s.density_rate().begin(), s.density_rate().end());
   return out;
 }
 

@@ -111,6 +111,13 @@ void apply_override(CaseFile& case_file, const std::string& assignment) {
       }
       if (field->is_repeated())
         throw ConfigError(where + "setting one entry of a list of numbers is not supported");
+      // A string as typed on a command line (solid.model=total_lagrangian) or
+      // quoted as in a case file (title="short").
+      if (field->cpp_type() == pb::FieldDescriptor::CPPTYPE_STRING && !value.starts_with('"') &&
+          !value.starts_with('\'')) {
+        reflection->SetString(message, field, value);
+        return;
+      }
       if (!pb::TextFormat::ParseFieldValueFromString(value, field, message))
         throw ConfigError(where + "cannot read '" + value + "' as the " + field->type_name() +
                           " that " + walked + " takes");

@@ -1,6 +1,7 @@
-// The cross-phase momentum terms of the coupler (coupler/src/cross_phase_forces):
-// momentum conservation to round-off, the pair range h_f + h_s, and the
-// direction and size of the push of a fluid at pressure P on a solid.
+// The cross-phase terms of the coupler (coupler/src/cross_phase_forces), for
+// both interface models: momentum conservation to round-off, the pair range
+// h_f + h_s, the direction and size of the push of a fluid at pressure P on a
+// solid, and (moving_wall) the solid's share in the water's continuity.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,10 +14,12 @@ namespace {
 using cosph::coupler::compute_cross_phase_forces;
 using cosph::coupler::CrossPhaseForces;
 using cosph::coupler::CrossPhaseParameters;
+using cosph::coupler::InterfaceModel;
 using sph::Mat2;
 using sph::Vec2;
 
-constexpr CrossPhaseParameters kDamped{0.05, 0.5};
+const CrossPhaseParameters kDamped{.model = InterfaceModel::stress_sum, .A = 0.05, .B = 0.5};
+const CrossPhaseParameters kWall{.model = InterfaceModel::moving_wall, .A = 0.05, .B = 0.5};
 
 // n particles scattered over [x0, x0 + width] x [0, width], every field random.
 sph::InterfaceParticles random_cloud(int n, double x0, double width, unsigned seed) {
@@ -53,7 +56,7 @@ TEST(CrossPhaseForces, ConserveMomentumToRoundOff) {
     // Overlapping clouds: every kind of pair, approaching and receding.
     const auto F = random_cloud(300, 0.0, 0.02, seed);
     const auto S = random_cloud(200, 0.01, 0.02, seed + 100);
-    const CrossPhaseForces out = compute_cross_phase_forces(F, S, kDamped);
+    const CrossPhaseForces out = compute_cross_phase_forces(F, S, seed == 2u ? kWall : kDamped);
     ASSERT_GT(out.pairs, 100);
     Vec2 total = Vec2::Zero();
     double scale = 0.0;
@@ -118,6 +121,58 @@ TEST(CrossPhaseForces, FluidPressurePushesTheSolidAway) {
   EXPECT_LT(std::abs(out.force_on_solid.y()), 1e-9 * out.force_on_solid.x());
   for (std::size_t s = 0; s < S.size(); ++s) EXPECT_GE(out.solid_a[s].x(), 0.0) << "solid " << s;
   for (std::size_t f = 0; f < F.size(); ++f) EXPECT_LE(out.fluid_a[f].x(), 0.0) << "fluid " << f;
+}
+
+// The same water against a solid whose own stress is a tension along the
+// interface growing to 100 P, as on the stretched face of a bent plate. As a
+// moving wall the solid is pushed by the water's pressure times the wetted
+// length, P L (the wall takes the water's pressure, so the kernel fraction 1/2
+// counts twice), and not along the interface, whatever its own stress. In the
+// study's stress sum the tension's gradient enters the water's momentum.
+TEST(CrossPhaseForces, MovingWallFeelsTheWaterPressureNotItsOwnStress) {
+  const double P = 1e4, L = 0.03, dx = 1e-3;
+  const auto F = block(-0.02, 0.0, L, dx, 1000.0, P);
+  auto S = block(0.0, 0.01, L, dx, 1100.0, 0.0);
+  for (std::size_t s = 0; s < S.size(); ++s)
+    S.sigma[s] << 0.0, 0.0, 0.0, 100.0 * P * S.x[s].y() / L;
+  const CrossPhaseForces wall = compute_cross_phase_forces(F, S, kWall);
+  EXPECT_NEAR(wall.force_on_solid.x(), P * L, 0.03 * P * L);
+  EXPECT_LT(std::abs(wall.force_on_solid.y()), 1e-9 * P * L);
+  const CrossPhaseForces stress_sum = compute_cross_phase_forces(F, S, kDamped);
+  EXPECT_GT(std::abs(stress_sum.force_on_solid.y()), 0.2 * P * L);  // 0.4 P L here
+}
+
+// A solid moving into water at rest compresses it: drho_f > 0 within reach
+// of the solid, 0 beyond, and the water's volume shrinks at u L / 2 (the
+// kernel's half-space fraction; the fluid's own pairs carry the rest as the
+// water starts to move). Receding, the signs turn.
+TEST(CrossPhaseForces, MovingWallCompressesTheWaterItMovesInto) {
+  const double L = 0.03, dx = 1e-3, u = 0.5;
+  const auto F = block(-0.02, 0.0, L, dx, 1000.0, 0.0);
+  for (double direction : {-1.0, 1.0}) {
+    auto S = block(0.0, 0.01, L, dx, 1100.0, 0.0);
+    for (Vec2& v : S.v) v = Vec2(direction * u, 0.0);
+    const CrossPhaseForces out = compute_cross_phase_forces(F, S, kWall);
+    ASSERT_EQ(out.fluid_drho.size(), F.size());
+    double volume_rate = 0.0;
+    for (std::size_t f = 0; f < F.size(); ++f) {
+      volume_rate += F.m[f] / F.rho[f] * out.fluid_drho[f] / F.rho[f];
+      const double gap = -F.x[f].x();
+      if (gap > F.h[f] + S.h[0]) {
+        EXPECT_EQ(out.fluid_drho[f], 0.0);
+      } else if (gap < dx) {
+        EXPECT_GT(-direction * out.fluid_drho[f], 0.0) << "fluid " << f;
+      }
+    }
+    EXPECT_NEAR(volume_rate, -direction * 0.5 * u * L, 0.03 * 0.5 * u * L);
+  }
+}
+
+// The study's rule has no share in the continuity: nothing is sent.
+TEST(CrossPhaseForces, StressSumSendsNoDensityRate) {
+  const auto F = random_cloud(50, 0.0, 0.01, 5);
+  const auto S = random_cloud(50, 0.005, 0.01, 6);
+  EXPECT_TRUE(compute_cross_phase_forces(F, S, kDamped).fluid_drho.empty());
 }
 
 }  // namespace

@@ -2,13 +2,14 @@
 // sph::StandaloneRun, with the coupler choosing every step.
 //
 // Per step: begin_step(dt) (kick, drift, own forces), one exchange with the
-// coupler (interface out; cross-phase accelerations, the next dt and the stop
-// flag in), end_step(dt) (kick). The coupler writes timeseries.csv from the
+// coupler (interface out; cross-phase accelerations and density rates, the
+// next dt and the stop flag in), end_step(dt) (kick). The coupler writes timeseries.csv from the
 // gauges each solver sends; each solver writes its own snapshots.
 //
 // Solver needs: begin_step, end_step, step_limits, collect_interface,
 // set_interface_accelerations, interaction_bounds, max_smoothing_length,
-// gauge_values, time, steps, snapshot, particles().size().
+// gauge_values, time, steps, snapshot, particles().size(); optionally
+// set_interface_density_rates.
 #pragma once
 
 #include <string>
@@ -92,6 +93,10 @@ class CoupledRun {
         step, time, solver_.step_limits().smallest(), solver_.interaction_bounds(),
         solver_.max_smoothing_length(), interface_, solver_.gauge_values());
     solver_.set_interface_accelerations(reply.acceleration);
+    // Only a solver with a use for the other phase's share in its continuity
+    // (the fluid) takes it; a solid model need not know of it.
+    if constexpr (requires { solver_.set_interface_density_rates(reply.density_rate); })
+      solver_.set_interface_density_rates(reply.density_rate);
     return reply;
   }
 

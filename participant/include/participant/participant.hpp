@@ -17,6 +17,7 @@ enum class PhaseKind { fluid, solid };
 struct StepReply {
   double dt;                            // the common step to take next
   std::vector<sph::Vec2> acceleration;  // per particle sent, in the order sent
+  std::vector<double> density_rate;     // the same, or empty: none
   sph::Region send_region;              // where to send particles from next time
   bool stop;                            // the run is over
 };

@@ -14,7 +14,7 @@
 
 namespace cosph::coupling {
 
-inline constexpr unsigned kProtocolVersion = 1;
+inline constexpr unsigned kProtocolVersion = 2;
 
 // A peer misbehaved, vanished or refused us: the message is ready for a user.
 class CouplingError : public std::runtime_error {

@@ -59,14 +59,20 @@ struct InterfaceParticles {
   }
 };
 
-// Hands the coupler's accelerations, given in the order of the particles a
-// solver sent (their indices in `sent`), to its external_a; the rest get none.
+// Hands the coupler's per-particle values (accelerations, density rates),
+// given in the order of the particles a solver sent (their indices in `sent`),
+// to the solver's own array; the rest get `none`.
+template <class T>
+void scatter_interface_values(const std::vector<long>& sent, const std::vector<T>& values,
+                              const T& none, std::vector<T>& external) {
+  std::fill(external.begin(), external.end(), none);
+  for (std::size_t k = 0; k < sent.size() && k < values.size(); ++k) external[sent[k]] = values[k];
+}
+
 inline void scatter_interface_accelerations(const std::vector<long>& sent,
                                             const std::vector<Vec2>& accelerations,
                                             std::vector<Vec2>& external_a) {
-  std::fill(external_a.begin(), external_a.end(), Vec2::Zero());
-  for (std::size_t k = 0; k < sent.size() && k < accelerations.size(); ++k)
-    external_a[sent[k]] = accelerations[k];
+  scatter_interface_values(sent, accelerations, Vec2::Zero().eval(), external_a);
 }
 
 // One measurement of a solver, a column of timeseries.csv.

@@ -31,6 +31,11 @@ inline Vec2 momentum_pair(double m_j, const Mat2& sigma_i, const Mat2& sigma_j, 
   return m_j * (bracket * grad_W_ij);
 }
 
+// Contribution of j to drho_i/dt (continuity): rho_i V_j v_ij . grad_i W_ij.
+inline double continuity_pair(double rho_i, double V_j, const Vec2& v_ij, const Vec2& grad_W_ij) {
+  return rho_i * V_j * v_ij.dot(grad_W_ij);
+}
+
 // Von Mises equivalent stress of a 2-D stress tensor (SPEC.md "Fracture"):
 //   sqrt( (3 sigma_ab sigma_ab - sigma_aa sigma_bb) / 2 ).
 inline double von_mises(const Mat2& sigma) {

@@ -1,15 +1,14 @@
 // Pressure of a rigid wall particle extrapolated from the water around it
 // (Adami, Hu & Adams 2012, J. Comput. Phys. 231:7057, eq. 27):
 //   P_w = ( sum_f P_f W_wf + (g - a_w) . sum_f rho_f (x_w - x_f) W_wf ) / sum_f W_wf
-// Walls here do not move, so a_w = 0. Unlike walls that evolve their own
-// density, this leaves no gap of about h between water and wall.
+// Unlike walls that evolve their own density, this leaves no gap of about h
+// between water and wall. The fluid's walls do not move (a_w = 0); the coupler
+// uses the same sum for solid particles seen by the water as a moving wall.
 #pragma once
 
 #include "sphcore/types.hpp"
 
-namespace cosph::fluid {
-
-using sph::Vec2;
+namespace sph {
 
 struct WallPressureSum {
   double weight = 0.0;         // sum_f W_wf
@@ -22,10 +21,10 @@ struct WallPressureSum {
     moment += (rho_f * W_wf) * x_wf;
   }
 
-  // Zero for a wall particle with no water in reach.
-  double wall_pressure(const Vec2& gravity) const {
-    return weight > 0.0 ? (pressure + gravity.dot(moment)) / weight : 0.0;
+  // Zero for a wall particle with no water in reach. `body_force` is g - a_w.
+  double wall_pressure(const Vec2& body_force) const {
+    return weight > 0.0 ? (pressure + body_force.dot(moment)) / weight : 0.0;
   }
 };
 
-}  // namespace cosph::fluid
+}  // namespace sph
