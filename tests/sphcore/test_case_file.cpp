@@ -84,6 +84,11 @@ TEST(CaseFileOverride, SetsNestedAndIndexedFields) {
   EXPECT_DOUBLE_EQ(c.config.run().gravity().y(), -2.0);
 }
 
+TEST(CaseFileOverride, StringsNeedNoQuotes) {
+  const sph::CaseFile c = sph::load_case(kDamBreak, {"title=short title"});
+  EXPECT_EQ(c.config.title(), "short title");
+}
+
 TEST(CaseFileOverride, LaterOverrideWins) {
   const sph::CaseFile c = sph::load_case(kDamBreak, {"run.cfl=0.1", "run.cfl=0.2"});
   EXPECT_DOUBLE_EQ(c.config.run().cfl(), 0.2);
