@@ -3,7 +3,8 @@
 //   cosph-case plan CASE [--set FIELD=VALUE ...]
 // prints one line, the executables in start order: "cosph-fluid" for water
 // alone, "cosph-solid" for a solid alone, "cosph-coupler cosph-fluid
-// cosph-solid" for a coupled case.
+// cosph-solid" for a coupled case ("cosph-solid-tl" instead of "cosph-solid"
+// when solid.model is "total_lagrangian").
 #include <iostream>
 #include <string>
 #include <vector>
@@ -38,11 +39,14 @@ int plan(int argc, char** argv) {
     const auto parameters = cosph::fluid::read_fluid_parameters(case_file);
     cosph::fluid::check_walls_close(case_file, parameters);
   }
-  if (solid) cosph::solid::read_solid_parameters(case_file);
+  // The solid's executable follows its model (solid.model).
+  const std::string solid_exe =
+      solid ? cosph::solid::model_executable(cosph::solid::read_solid_parameters(case_file).model)
+            : "";
   if (fluid && solid) {
-    std::cout << "cosph-coupler cosph-fluid cosph-solid\n";
+    std::cout << "cosph-coupler cosph-fluid " << solid_exe << "\n";
   } else {
-    std::cout << (fluid ? "cosph-fluid" : "cosph-solid") << "\n";
+    std::cout << (fluid ? std::string("cosph-fluid") : solid_exe) << "\n";
   }
   return 0;
 }

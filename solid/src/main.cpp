@@ -20,6 +20,7 @@ int run_solid(int argc, char** argv) {
       argc, argv, "cosph-solid", "SPH linear elastic solid solver (SPEC.md \"Solid\").");
   const sph::CaseFile case_file = sph::load_case(args.case_path, args.overrides);
   const auto parameters = cosph::solid::read_solid_parameters(case_file);
+  cosph::solid::require_model(case_file, parameters, cosph::solid::SolidModel::jaumann);
   const bool coupled = !args.endpoint.empty();
   sph::require(coupled || !case_file.config.has_fluid(), case_file, "fluid",
                "this case is coupled: run it with coupler/cosph, which starts the coupler");

@@ -8,21 +8,29 @@
 
 namespace cosph::solid {
 
-std::vector<int> tip_gauge_ids(const SolidParticles& P, const sph::Vec2& p, double dx) {
+std::vector<int> tip_gauge_ids(const std::vector<int>& id, const std::vector<Vec2>& x0,
+                               const sph::Vec2& p, double dx) {
   double nearest = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 0; i < P.size(); ++i) nearest = std::min(nearest, (P.x0[i] - p).norm());
+  for (const Vec2& x : x0) nearest = std::min(nearest, (x - p).norm());
   std::vector<int> ids;
-  for (std::size_t i = 0; i < P.size(); ++i)
-    if ((P.x0[i] - p).norm() <= nearest + 1e-6 * dx) ids.push_back(P.id[i]);
+  for (std::size_t i = 0; i < x0.size(); ++i)
+    if ((x0[i] - p).norm() <= nearest + 1e-6 * dx) ids.push_back(id[i]);
   std::sort(ids.begin(), ids.end());
   return ids;
 }
 
+Vec2 mean_displacement(const std::vector<int>& id, const std::vector<Vec2>& x,
+                       const std::vector<Vec2>& x0, const std::vector<int>& tip_ids) {
+  Vec2 sum = Vec2::Zero();
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (std::binary_search(tip_ids.begin(), tip_ids.end(), id[i])) sum += x[i] - x0[i];
+  return tip_ids.empty() ? sum : Vec2(sum / static_cast<double>(tip_ids.size()));
+}
+
 SolidGauges measure(const SolidParticles& P, const std::vector<int>& tip_ids) {
   SolidGauges g{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0};
-  Vec2 tip = Vec2::Zero();
+  const Vec2 tip = mean_displacement(P.id, P.x, P.x0, tip_ids);
   for (std::size_t i = 0; i < P.size(); ++i) {
-    if (std::binary_search(tip_ids.begin(), tip_ids.end(), P.id[i])) tip += P.x[i] - P.x0[i];
     const double speed2 = P.v[i].squaredNorm();
     g.kinetic_energy += 0.5 * P.m[i] * speed2;
     g.max_speed = std::max(g.max_speed, speed2);
@@ -35,7 +43,6 @@ SolidGauges measure(const SolidParticles& P, const std::vector<int>& tip_ids) {
     g.max_von_mises = std::max(g.max_von_mises, sph::von_mises(P.sigma[i]));
     g.failed += P.failed[i];
   }
-  if (!tip_ids.empty()) tip /= static_cast<double>(tip_ids.size());
   g.tip_dx = tip.x();
   g.tip_dy = tip.y();
   g.max_speed = std::sqrt(g.max_speed);

@@ -20,7 +20,16 @@ struct SolidGauges {
 // The particles a tip gauge at point p follows: those nearest p at the start
 // (several when p lies midway between lattice sites, as a plate's mid-line
 // does with an even number of particles across).
-std::vector<int> tip_gauge_ids(const SolidParticles& particles, const sph::Vec2& p, double dx);
+std::vector<int> tip_gauge_ids(const std::vector<int>& id, const std::vector<Vec2>& x0,
+                               const sph::Vec2& p, double dx);
+inline std::vector<int> tip_gauge_ids(const SolidParticles& particles, const sph::Vec2& p,
+                                      double dx) {
+  return tip_gauge_ids(particles.id, particles.x0, p, dx);
+}
+
+// Mean displacement x - x0 of the particles with the given (sorted) ids; zero for none.
+Vec2 mean_displacement(const std::vector<int>& id, const std::vector<Vec2>& x,
+                       const std::vector<Vec2>& x0, const std::vector<int>& tip_ids);
 
 SolidGauges measure(const SolidParticles& particles, const std::vector<int>& tip_ids);
 

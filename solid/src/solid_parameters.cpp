@@ -61,8 +61,12 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
   SolidParameters p;
   p.run = sph::read_run_parameters(case_file);
 
-  require(solid.model().empty() || solid.model() == "jaumann", case_file, "solid.model",
-          "unknown model '" + solid.model() + "' (known: jaumann)");
+  require(
+      solid.model().empty() || solid.model() == "jaumann" || solid.model() == "total_lagrangian",
+      case_file, "solid.model",
+      "unknown model '" + solid.model() + "' (known: jaumann, total_lagrangian)");
+  p.model =
+      solid.model() == "total_lagrangian" ? SolidModel::total_lagrangian : SolidModel::jaumann;
   require(solid.spacing() > 0.0, case_file, "solid.spacing",
           "must be positive, got " + format_number(solid.spacing()) + " m");
   p.dx = solid.spacing();
@@ -95,6 +99,12 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
 
   p.artificial_stress = read_artificial_stress(case_file);
   p.fracture = read_fracture(case_file, p.dx, p.nu);
+  // Failure needs a rule for what a failed particle's reference neighbours
+  // still transmit; until the total-Lagrangian solid has one, it refuses.
+  require(!(p.fracture.enabled && p.model == SolidModel::total_lagrangian), case_file,
+          "solid.fracture.enabled",
+          "von Mises failure is not implemented for solid.model 'total_lagrangian' (use "
+          "'jaumann', or turn fracture off)");
 
   if (solid.has_initial_velocity()) {
     const auto& mode = solid.initial_velocity();
@@ -105,8 +115,32 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
                 format_number(mode.tip_speed()) + " m/s");
     p.bending_mode = BendingModeParameters{mode.tip_speed(), mode.root_x(), mode.length()};
   }
+  require(!solid.has_hourglass_control() || p.model == SolidModel::total_lagrangian, case_file,
+          "solid.hourglass_control", "applies to solid.model 'total_lagrangian' only");
+  require(!solid.has_hourglass_control() || solid.hourglass_control() >= 0.0, case_file,
+          "solid.hourglass_control",
+          "must not be negative (0 turns it off), got " + format_number(solid.hourglass_control()));
+  p.hourglass_alpha = solid.has_hourglass_control() ? solid.hourglass_control() : 10.0;
   if (solid.has_tip_gauge()) p.tip_gauge = sph::Vec2(solid.tip_gauge().x(), solid.tip_gauge().y());
   return p;
+}
+
+const char* model_name(SolidModel model) {
+  return model == SolidModel::total_lagrangian ? "total_lagrangian" : "jaumann";
+}
+
+const char* model_executable(SolidModel model) {
+  return model == SolidModel::total_lagrangian ? "cosph-solid-tl" : "cosph-solid";
+}
+
+void require_model(const sph::CaseFile& case_file, const SolidParameters& parameters,
+                   SolidModel model) {
+  require(parameters.model == model, case_file, "solid.model",
+          std::string("is '") + model_name(parameters.model) + "', which " +
+              model_executable(model) + " does not run: run " + model_executable(parameters.model) +
+              " (coupler/cosph picks it), or set "
+              "solid.model: \"" +
+              model_name(model) + "\"");
 }
 
 }  // namespace cosph::solid

@@ -32,7 +32,14 @@ struct BendingModeParameters {
   double tip_speed, root_x, length;
 };
 
+// The constitutive model, each with its own executable (solid.model).
+enum class SolidModel {
+  jaumann,           // cosph-solid: Gray, Monaghan & Swift 2001, Jaumann stress rate
+  total_lagrangian,  // cosph-solid-tl: total-Lagrangian SPH, St Venant-Kirchhoff
+};
+
 struct SolidParameters {
+  SolidModel model;
   sph::RunParameters run;
   double dx;     // initial spacing
   double h;      // smoothing length
@@ -45,9 +52,19 @@ struct SolidParameters {
   FractureParameters fracture;
   std::optional<BendingModeParameters> bending_mode;
   std::optional<sph::Vec2> tip_gauge;
+  double hourglass_alpha;  // total_lagrangian: hourglass control (Ganzenmueller 2015)
 };
 
 // Throws sph::ConfigError naming the file, field and reason for bad input.
 SolidParameters read_solid_parameters(const sph::CaseFile& case_file);
+
+// The case's model name, and the executable that runs it.
+const char* model_name(SolidModel model);
+const char* model_executable(SolidModel model);
+
+// Throws sph::ConfigError naming the file and solid.model unless the case
+// asks for `model`: each executable runs one model and refuses the other.
+void require_model(const sph::CaseFile& case_file, const SolidParameters& parameters,
+                   SolidModel model);
 
 }  // namespace cosph::solid

@@ -1,0 +1,65 @@
+// The total-Lagrangian solid's particles, struct-of-arrays. The reference
+// configuration (X, V0, the neighbour lists and their corrected kernel
+// gradients) is fixed when the solver starts; only x, v and what derives from
+// them change. Clamped particles carry stress but do not move.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "sphcore/types.hpp"
+
+namespace cosph::solid::tl {
+
+using sph::Mat2;
+using sph::Vec2;
+
+// A neighbour j of particle i in the reference configuration.
+struct ReferenceNeighbour {
+  int j;
+  double W0;           // W(|X_i - X_j|)
+  double dW0_dr;       // dW/dr at |X_i - X_j|, for terms that act along the current x_ij
+  Vec2 grad_W0;        // grad_i W_ij at the reference positions
+  Vec2 grad_W0_tilde;  // L0_i grad_W0: the corrected gradient of F_i
+};
+
+struct TLParticles {
+  // Fixed: identity, reference configuration and material.
+  std::vector<int> id;
+  std::vector<Vec2> X;  // reference (initial) position
+  std::vector<double> m, V0;
+  std::vector<double> lambda, mu, E, c;  // Lame constants, Young's modulus, P-wave speed
+  std::vector<std::uint8_t> clamped;
+  std::vector<Mat2> L0;  // reference kernel-gradient correction
+  std::vector<std::vector<ReferenceNeighbour>> neighbours;
+
+  // State.
+  std::vector<Vec2> x, v;
+  // Acceleration imposed from outside (the coupler's fluid forces); zero alone.
+  std::vector<Vec2> external_a;
+
+  // Derived from the state each step.
+  std::vector<Mat2> F;                // deformation gradient
+  std::vector<double> J;              // det F
+  std::vector<Mat2> P_L0;             // first Piola-Kirchhoff stress times L0, the momentum flux
+  std::vector<Mat2> sigma;            // Cauchy stress P F^T / J (in-plane)
+  std::vector<double> sigma_zz;       // out-of-plane Cauchy stress of plane strain
+  std::vector<double> strain_energy;  // per unit reference volume
+  std::vector<Vec2> a;                // dv/dt from the solid's own forces (zero for clamped)
+
+  std::size_t size() const { return x.size(); }
+
+  void resize_derived() {
+    const std::size_t n = size();
+    F.assign(n, Mat2::Identity());
+    J.assign(n, 1.0);
+    P_L0.assign(n, Mat2::Zero());
+    sigma.assign(n, Mat2::Zero());
+    sigma_zz.assign(n, 0.0);
+    strain_energy.assign(n, 0.0);
+    a.assign(n, Vec2::Zero());
+    external_a.assign(n, Vec2::Zero());
+  }
+};
+
+}  // namespace cosph::solid::tl

@@ -1,0 +1,176 @@
+#include "tl_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "reference_configuration.hpp"
+#include "sphcore/pair_terms.hpp"
+#include "sphcore/runaway_error.hpp"
+
+namespace cosph::solid::tl {
+
+namespace {
+
+const SolidParameters& checked(const sph::CaseFile& case_file, const SolidParameters& parameters) {
+  require_model(case_file, parameters, SolidModel::total_lagrangian);
+  return parameters;
+}
+
+}  // namespace
+
+TLSolver::TLSolver(const sph::CaseFile& case_file, const SolidParameters& parameters)
+    : parameters_(checked(case_file, parameters)),
+      forces_{parameters.h, parameters.A, parameters.B, parameters.hourglass_alpha,
+              parameters.run.gravity},
+      particles_(build_reference_configuration(case_file, parameters)) {
+  if (parameters_.tip_gauge)
+    tip_ids_ = tip_gauge_ids(particles_.id, particles_.X, *parameters_.tip_gauge, parameters_.dx);
+  update();
+}
+
+void TLSolver::update() {
+  compute_deformation_and_stress(particles_);
+  compute_accelerations(particles_, forces_);
+}
+
+sph::StepLimits TLSolver::step_limits() const {
+  const TLParticles& P = particles_;
+  double v_max2 = 0.0, a_max2 = 0.0, c_max = 0.0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    v_max2 = std::max(v_max2, P.v[i].squaredNorm());
+    a_max2 = std::max(a_max2, P.a[i].squaredNorm());
+    c_max = std::max(c_max, P.c[i]);
+  }
+  return sph::step_limits(parameters_.run.cfl, parameters_.h, c_max, std::sqrt(v_max2),
+                          std::sqrt(a_max2), 0.0);
+}
+
+void TLSolver::begin_step(double dt) {
+  TLParticles& P = particles_;
+  const long n = static_cast<long>(P.size());
+  const double half = 0.5 * dt;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    if (P.clamped[i]) continue;
+    P.v[i] += half * (P.a[i] + P.external_a[i]);
+    P.x[i] += dt * P.v[i];
+  }
+  update();
+  check_state();  // before the state is shown to anyone, the coupler included
+}
+
+void TLSolver::end_step(double dt) {
+  TLParticles& P = particles_;
+  const long n = static_cast<long>(P.size());
+  const double half = 0.5 * dt;
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i)
+    if (!P.clamped[i]) P.v[i] += half * (P.a[i] + P.external_a[i]);
+  time_ += dt;
+  ++steps_;
+  check_state();
+}
+
+void TLSolver::collect_interface(const sph::Region& region, sph::InterfaceParticles& out) {
+  const TLParticles& P = particles_;
+  out.clear();
+  interface_index_.clear();
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (!region.contains(P.x[i])) continue;
+    interface_index_.push_back(static_cast<long>(i));
+    const double rho = P.m[i] / (P.V0[i] * P.J[i]);  // rho0 / J
+    out.add(P.id[i], P.x[i], P.v[i], P.sigma[i], P.m[i], rho, parameters_.h, P.c[i]);
+  }
+}
+
+void TLSolver::set_interface_accelerations(const std::vector<Vec2>& accelerations) {
+  sph::scatter_interface_accelerations(interface_index_, accelerations, particles_.external_a);
+}
+
+sph::Region TLSolver::interaction_bounds() const {
+  sph::Region bounds;
+  for (const Vec2& x : particles_.x) bounds.include(x);
+  return bounds;
+}
+
+SolidGauges TLSolver::gauges() const {
+  const TLParticles& P = particles_;
+  SolidGauges g{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0};
+  const Vec2 tip = mean_displacement(P.id, P.x, P.X, tip_ids_);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const double speed2 = P.v[i].squaredNorm();
+    g.kinetic_energy += 0.5 * P.m[i] * speed2;
+    g.max_speed = std::max(g.max_speed, speed2);
+    g.elastic_energy += P.V0[i] * P.strain_energy[i];
+    g.max_von_mises = std::max(g.max_von_mises, sph::von_mises(P.sigma[i]));
+  }
+  g.tip_dx = tip.x();
+  g.tip_dy = tip.y();
+  g.max_speed = std::sqrt(g.max_speed);
+  return g;
+}
+
+std::vector<sph::Gauge> TLSolver::gauge_values() const {
+  const SolidGauges g = gauges();
+  return {{"tip_dx", "m", g.tip_dx},
+          {"tip_dy", "m", g.tip_dy},
+          {"kinetic_energy", "J/m", g.kinetic_energy},
+          {"elastic_energy", "J/m", g.elastic_energy},
+          {"max_speed", "m/s", g.max_speed},
+          {"max_von_mises", "Pa", g.max_von_mises},
+          {"failed", "1", static_cast<double>(g.failed)}};
+}
+
+void TLSolver::check_state() const {
+  const TLParticles& P = particles_;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const char* reason = nullptr;
+    if (!P.x[i].allFinite() || !P.v[i].allFinite() || !P.F[i].allFinite())
+      reason = "its state is not finite";
+    else if (P.v[i].norm() > P.c[i])
+      reason = "it moves faster than the solid's sound speed";
+    else if (!(P.J[i] >= 0.5 && P.J[i] <= 2.0))
+      reason = "its volume ratio J = det F left [0.5, 2] (far outside linear elasticity)";
+    if (reason == nullptr) continue;
+    std::ostringstream message;
+    message << "solid particle " << P.id[i] << " at (" << P.x[i].x() << ", " << P.x[i].y()
+            << ") m, t = " << time_ << " s, step " << steps_ << ": " << reason << " (speed "
+            << P.v[i].norm() << " m/s, sound speed " << P.c[i] << " m/s, J " << P.J[i]
+            << "); the run has blown up: try a smaller run.cfl";
+    throw sph::RunawayError(message.str());
+  }
+}
+
+sph::Snapshot TLSolver::snapshot() const {
+  const TLParticles& P = particles_;
+  const std::size_t n = P.size();
+  std::vector<double> rho(n), pressure(n), xx(n), xy(n), yy(n), vm(n);
+  std::vector<int> failed(n, 0);
+  std::vector<int> clamped(P.clamped.begin(), P.clamped.end());
+  for (std::size_t i = 0; i < n; ++i) {
+    rho[i] = P.m[i] / (P.V0[i] * P.J[i]);
+    // Mean normal stress of plane strain, sigma_zz included (as the Jaumann
+    // solid's P = K (rho/rho0 - 1) is).
+    pressure[i] = -(P.sigma[i].trace() + P.sigma_zz[i]) / 3.0;
+    xx[i] = P.sigma[i](0, 0);
+    xy[i] = P.sigma[i](0, 1);
+    yy[i] = P.sigma[i](1, 1);
+    vm[i] = sph::von_mises(P.sigma[i]);
+  }
+  sph::Snapshot snapshot(P.x);
+  snapshot.add_scalar("id", P.id);
+  snapshot.add_vector("velocity", P.v);
+  snapshot.add_scalar("density", rho);
+  snapshot.add_scalar("pressure", pressure);
+  snapshot.add_scalar("stress_xx", xx);
+  snapshot.add_scalar("stress_xy", xy);
+  snapshot.add_scalar("stress_yy", yy);
+  snapshot.add_scalar("von_mises", vm);
+  snapshot.add_scalar("J", P.J);
+  snapshot.add_scalar("failed", failed);
+  snapshot.add_scalar("clamped", clamped);
+  return snapshot;
+}
+
+}  // namespace cosph::solid::tl

@@ -1,0 +1,244 @@
+// The total-Lagrangian solid (solid/total_lagrangian): the deformation
+// gradient of a linear map, objectivity, the stress of a uniaxial stretch,
+// momentum conservation, model selection, the oscillating plate's period
+// (short mode) and a runaway run.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <vector>
+
+#include "bending_mode.hpp"
+#include "hooke_pressure.hpp"
+#include "reference_configuration.hpp"
+#include "solid_test_cases.hpp"
+#include "st_venant_kirchhoff.hpp"
+#include "tl_solver.hpp"
+
+namespace cosph::solid::tl {
+namespace {
+
+using testing::plate_case_path;
+
+// The coarse plate (6 across, default hourglass control) measured +2.6 % over
+// two periods (docs/results/oscillating_plate_tl.md); the test guards against
+// regressions beyond 6 %, not the 3 % target that the 10-across run meets.
+constexpr double kCoarsePeriodTolerance = 0.06;
+
+// A free block, 10 x 6 particles, no gravity: every particle within 2h of a
+// surface or a corner.
+const char* kBlock = R"(
+run { end_time: 0.01 gravity { x: 0 y: 0 } }
+solid {
+  model: "total_lagrangian"
+  spacing: 0.01 density: 1000 youngs_modulus: 1e6 poisson_ratio: 0.3
+  body { min { x: 0 y: 0 } max { x: 0.1 y: 0.06 } }
+}
+)";
+
+TLSolver block_solver() {
+  const sph::CaseFile case_file = sph::load_case(testing::write_case("tl_block", kBlock));
+  return TLSolver(case_file, read_solid_parameters(case_file));
+}
+
+// Moves every particle to x = A X + b and recomputes F and the stress.
+void deform(TLSolver& solver, const Mat2& A, const Vec2& b) {
+  TLParticles& P = solver.particles();
+  for (std::size_t i = 0; i < P.size(); ++i) P.x[i] = A * P.X[i] + b;
+  solver.update();
+}
+
+TEST(TotalLagrangian, DeformationGradientOfALinearMapIsExactEverywhere) {
+  TLSolver solver = block_solver();
+  Mat2 A;
+  A << 1.3, -0.4, 0.2, 0.8;
+  deform(solver, A, Vec2(0.5, -2.0));
+  const TLParticles& P = solver.particles();
+  ASSERT_EQ(P.size(), 60u);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    // Free surfaces and corners included: L0 corrects the one-sided supports.
+    EXPECT_LT((P.F[i] - A).norm(), 1e-12) << "particle " << P.id[i] << " at " << P.X[i].transpose();
+    EXPECT_NEAR(P.J[i], A.determinant(), 1e-12);
+  }
+}
+
+TEST(TotalLagrangian, RigidRotationGivesNoStress) {
+  TLSolver solver = block_solver();
+  const double angle = 1.1;  // rad: far beyond small rotations
+  Mat2 R;
+  R << std::cos(angle), -std::sin(angle), std::sin(angle), std::cos(angle);
+  deform(solver, R, Vec2(3.0, 1.0));
+  const TLParticles& P = solver.particles();
+  const double E = solver.parameters().E;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    EXPECT_LT((P.F[i] - R).norm(), 1e-12) << "particle " << P.id[i];
+    EXPECT_LT(P.sigma[i].norm(), 1e-10 * E) << "particle " << P.id[i];
+    EXPECT_LT(std::abs(P.sigma_zz[i]), 1e-10 * E);
+    EXPECT_LT(P.a[i].norm(), 1e-6) << "particle " << P.id[i];  // m/s^2, against E/(rho dx) = 1e5
+  }
+}
+
+// Stretch along x, held in y (and z: plane strain): F = diag(1 + e, 1).
+TEST(TotalLagrangian, UniaxialStretchGivesTheStVenantKirchhoffStress) {
+  TLSolver solver = block_solver();
+  const SolidParameters& par = solver.parameters();
+  const double lambda = lame_lambda(par.K, par.G), mu = par.G;
+  for (const double e : {1e-6, 0.2}) {
+    deform(solver, Vec2(1.0 + e, 1.0).asDiagonal(), Vec2::Zero());
+    const double E_xx = 0.5 * ((1.0 + e) * (1.0 + e) - 1.0);
+    const double S_xx = (lambda + 2.0 * mu) * E_xx, S_yy = lambda * E_xx;
+    // sigma = F S F^T / J with J = 1 + e.
+    const double sigma_xx = (1.0 + e) * S_xx, sigma_yy = S_yy / (1.0 + e);
+    const TLParticles& P = solver.particles();
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      EXPECT_NEAR(P.sigma[i](0, 0), sigma_xx, 1e-9 * std::abs(sigma_xx)) << "e = " << e;
+      EXPECT_NEAR(P.sigma[i](1, 1), sigma_yy, 1e-9 * std::abs(sigma_xx)) << "e = " << e;
+      EXPECT_NEAR(P.sigma[i](0, 1), 0.0, 1e-9 * std::abs(sigma_xx));
+    }
+    if (e < 1e-3) {
+      // Small strain: the plane-strain Hooke law of the Jaumann solid,
+      // sigma_xx = (K + 4G/3) e, sigma_yy = (K - 2G/3) e.
+      EXPECT_NEAR(P.sigma[0](0, 0), (par.K + 4.0 * par.G / 3.0) * e, 1e-5 * par.E * e);
+      EXPECT_NEAR(P.sigma[0](1, 1), (par.K - 2.0 * par.G / 3.0) * e, 1e-5 * par.E * e);
+    }
+  }
+}
+
+// A free block with random velocities and a random distortion: internal
+// forces (stress, viscosity, hourglass control) are equal and opposite per
+// pair, so total momentum stays what it was to round-off.
+TEST(TotalLagrangian, FreeBodyConservesMomentum) {
+  TLSolver solver = block_solver();
+  TLParticles& P = solver.particles();
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    P.x[i] += 0.05 * 0.01 * Vec2(unit(random), unit(random));
+    P.v[i] = Vec2(unit(random), unit(random));  // m/s, against c = 37 m/s
+  }
+  solver.update();
+  auto momentum = [&] {
+    Vec2 sum = Vec2::Zero();
+    for (std::size_t i = 0; i < P.size(); ++i) sum += P.m[i] * P.v[i];
+    return sum;
+  };
+  double scale = 0.0;
+  for (std::size_t i = 0; i < P.size(); ++i) scale += P.m[i] * P.v[i].norm();
+  const Vec2 before = momentum();
+  const std::vector<Vec2> v_before = P.v;
+  for (int k = 0; k < 200; ++k) solver.step(solver.step_limits().smallest());
+  EXPECT_LT((momentum() - before).norm(), 1e-12 * scale)
+      << (momentum() - before).transpose() << " against " << scale;
+  // And the particles did exchange momentum.
+  double exchanged = 0.0;
+  for (std::size_t i = 0; i < P.size(); ++i) exchanged += P.m[i] * (P.v[i] - v_before[i]).norm();
+  EXPECT_GT(exchanged, 0.1 * scale);
+}
+
+std::string refusal(const std::vector<std::string>& overrides) {
+  try {
+    const sph::CaseFile case_file = sph::load_case(plate_case_path(), overrides);
+    TLSolver solver(case_file, read_solid_parameters(case_file));
+  } catch (const sph::ConfigError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+TEST(TotalLagrangianParameters, BadModelsAndOptionsAreRefused) {
+  std::string message = refusal({"solid.model=total_lagrangien"});
+  EXPECT_NE(message.find("oscillating_plate.pbtxt"), std::string::npos) << message;
+  EXPECT_NE(message.find("solid.model"), std::string::npos) << message;
+  EXPECT_NE(message.find("total_lagrangien"), std::string::npos) << message;
+  // The case's own model is jaumann: this solver is the wrong one for it.
+  message = refusal({});
+  EXPECT_NE(message.find("solid.model"), std::string::npos) << message;
+  EXPECT_NE(message.find("cosph-solid "), std::string::npos) << message;
+  message = refusal({"solid.model=total_lagrangian", "solid.fracture.enabled=true",
+                     "solid.fracture.yield_stress=1e5"});
+  EXPECT_NE(message.find("solid.fracture.enabled"), std::string::npos) << message;
+  message = refusal({"solid.model=total_lagrangian", "solid.hourglass_control=-1"});
+  EXPECT_NE(message.find("solid.hourglass_control"), std::string::npos) << message;
+  message = refusal({"solid.hourglass_control=5"});  // jaumann has no such option
+  EXPECT_NE(message.find("solid.hourglass_control"), std::string::npos) << message;
+  EXPECT_EQ(refusal({"solid.model=total_lagrangian"}), "");
+}
+
+struct Exit {
+  int code;
+  std::string stderr_text;
+};
+
+Exit run(const std::string& executable, const std::string& arguments) {
+  const std::string err = testing::temporary_path("tl_stderr.txt");
+  const std::string command =
+      std::string(COSPH_BIN_DIR) + "/" + executable + " " + arguments + " > /dev/null 2> " + err;
+  const int status = std::system(command.c_str());
+  std::stringstream text;
+  text << std::ifstream(err).rdbuf();
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text.str()};
+}
+
+// Each executable runs one model and refuses the other, naming the file and the field.
+TEST(CosphSolidTl, EachExecutableRefusesTheOtherModel) {
+  const std::string out = testing::temporary_path("tl_refused");
+  const std::string plate = "--case " + plate_case_path() + " --out " + out;
+  Exit result = run("cosph-solid-tl", plate);
+  EXPECT_EQ(result.code, 2) << result.stderr_text;
+  EXPECT_NE(result.stderr_text.find("oscillating_plate.pbtxt"), std::string::npos);
+  EXPECT_NE(result.stderr_text.find("solid.model"), std::string::npos) << result.stderr_text;
+  result = run("cosph-solid", plate + " --set solid.model=total_lagrangian");
+  EXPECT_EQ(result.code, 2) << result.stderr_text;
+  EXPECT_NE(result.stderr_text.find("solid.model"), std::string::npos) << result.stderr_text;
+  EXPECT_NE(result.stderr_text.find("cosph-solid-tl"), std::string::npos) << result.stderr_text;
+}
+
+// A plate flung at its sound speed with CFL 1 blows up (J leaves [0.5, 2]
+// near the clamp within 0.01 s): the solver stops
+// with a clear error (exit 1) and keeps the last good state.
+TEST(CosphSolidTl, RunawayStopsWithLastGoodSnapshot) {
+  const std::string out = testing::temporary_path("tl_runaway");
+  std::filesystem::remove_all(out);
+  const Exit result = run("cosph-solid-tl",
+                          "--case " + plate_case_path() + " --out " + out +
+                              " --set solid.model=total_lagrangian"
+                              " --set solid.spacing=0.0033333333333333 --set run.cfl=1"
+                              " --set run.end_time=0.05 --set solid.initial_velocity.tip_speed=60");
+  EXPECT_EQ(result.code, 1) << result.stderr_text;
+  EXPECT_NE(result.stderr_text.find("blown up"), std::string::npos) << result.stderr_text;
+  EXPECT_TRUE(std::filesystem::exists(out + "/solid_last_good.h5"));
+}
+
+// Short mode of scripts/validate_oscillating_plate.py --model total_lagrangian:
+// the coarse plate (6 particles across) over one period.
+TEST(OscillatingPlateTl, CoarsePeriodNearThinPlateTheory) {
+  const sph::CaseFile case_file = sph::load_case(
+      plate_case_path(),
+      {"solid.model=total_lagrangian", "solid.spacing=0.0033333333333333", "run.end_time=0.3"});
+  const SolidParameters par = read_solid_parameters(case_file);
+  TLSolver solver(case_file, par);
+  std::vector<double> crossings;
+  double previous_t = 0.0, previous_y = 0.0;
+  while (solver.time() < par.run.end_time) {
+    solver.step(solver.step_limits().smallest());
+    const double y = solver.gauges().tip_dy, t = solver.time();
+    if (previous_t > 0.01 && (y > 0.0) != (previous_y > 0.0))
+      crossings.push_back(previous_t + (t - previous_t) * previous_y / (previous_y - y));
+    previous_t = t;
+    previous_y = y;
+  }
+  ASSERT_GE(crossings.size(), 2u);
+  const double T =
+      2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+  const double T_theory =
+      2.0 * M_PI / cantilever_angular_frequency(par.E, par.nu, par.rho0, 0.02, 0.2);
+  EXPECT_NEAR(T / T_theory, 1.0, kCoarsePeriodTolerance) << "T = " << T << " s";
+}
+
+}  // namespace
+}  // namespace cosph::solid::tl
