@@ -1,6 +1,7 @@
 // cosph-coupler: the process between the fluid and the solid solver. It fixes
 // the common step and computes the cross-phase momentum terms once per pair.
 // Started by the launcher: coupler/cosph run CASE --out DIR.
+#include <algorithm>
 #include <iostream>
 
 #include "coupler_session.hpp"
@@ -68,6 +69,9 @@ int run(int argc, char** argv) {
   settings.run = sph::read_run_parameters(case_file);
   settings.timeout_seconds = coupling.timeout() > 0.0 ? coupling.timeout() : 10.0;
   settings.cross_phase = read_cross_phase_parameters(case_file);
+  sph::require(coupling.max_substeps() >= 0, case_file, "coupling.max_substeps",
+               "must not be negative");
+  settings.max_substeps = std::max(1, coupling.max_substeps());
   sph::make_output_dir(args.out_dir);
   sph::install_stop_handlers();
   return cosph::coupler::run_coupler(settings);

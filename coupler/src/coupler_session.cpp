@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "common_step.hpp"
 #include "participant/protocol.hpp"
 #include "sphcore/run_control.hpp"
 #include "sphcore/timeseries_writer.hpp"
@@ -179,7 +180,8 @@ class Session {
     const double t = peers_[kFluid].state.time();
     const double end = settings_.run.end_time;
     const bool stop = t >= end - 1e-9 * end;
-    double dt = std::min(peers_[kFluid].state.proposed_dt(), peers_[kSolid].state.proposed_dt());
+    double dt = common_step(peers_[kFluid].state.proposed_dt(), peers_[kSolid].state.proposed_dt(),
+                            settings_.max_substeps);
     if (!(dt > 0.0) || !std::isfinite(dt))
       fail("a solver proposed a step that is not positive at t = " + std::to_string(t) + " s");
     dt = std::min(dt, end - t);

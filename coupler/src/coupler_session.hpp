@@ -15,6 +15,7 @@ struct CouplerSettings {
   std::string out_dir;
   sph::RunParameters run;
   CrossPhaseParameters cross_phase;
+  int max_substeps = 1;  // 1: synchronised steps; more: multi-rate (common_step.hpp)
   double timeout_seconds;
 };
 

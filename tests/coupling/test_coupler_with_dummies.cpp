@@ -58,11 +58,11 @@ bool contains(const std::string& text, const std::string& part) {
 
 class CouplerWithDummies : public ::testing::Test {
  protected:
-  void write_case(double timeout) {
+  void write_case(double timeout, int max_substeps = 0) {
     std::ostringstream text;
     text << "run { end_time: " << kEndTime << " output_interval: 0.0005 snapshot_interval: 0.02 }\n"
          << "fluid { spacing: 0.001 }\nsolid { spacing: 0.001 }\n"
-         << "coupling { timeout: " << timeout << " }\n";
+         << "coupling { timeout: " << timeout << " max_substeps: " << max_substeps << " }\n";
     cosph::testing::write_text(dir_.file("case.pbtxt"), text.str());
     timeout_ = timeout;
   }
@@ -147,6 +147,38 @@ TEST_F(CouplerWithDummies, RunToTheEndWithTheSmallerStepAndBalancedForces) {
   const std::size_t last = timeseries.rows.size() - 1;
   EXPECT_EQ(timeseries.at(last, "fluid_steps"), timeseries.at(last, "solid_steps"));
   EXPECT_GT(timeseries.at(last, "solid_force_x"), 0.0);
+}
+
+// Multi-rate: the window is the larger proposal (the solid's 1.5 ms, within 4
+// times the fluid's 1 ms); the fluid covers it in two sub-steps of 0.75 ms
+// with the forces of the window's start held, and both meet at its end.
+TEST_F(CouplerWithDummies, MultiRateWindowIsTheLargerStepAndTheOtherSideSubsteps) {
+  write_case(5.0, 4);
+  auto coupler = start_coupler();
+  auto fluid = start_dummy("fluid", {"--stress", "1000"});
+  auto solid = start_dummy("solid", {"--stress", "0", "--motion", "-0.01"});
+  const auto deadline = Clock::now() + 15s;
+  ASSERT_EQ(coupler->wait_until(deadline), 0) << coupler->err();
+  ASSERT_EQ(fluid->wait_until(deadline), 0) << fluid->err();
+  ASSERT_EQ(solid->wait_until(deadline), 0) << solid->err();
+
+  const Table fluid_steps(out("dummy_fluid.csv")), solid_steps(out("dummy_solid.csv"));
+  const std::size_t windows = solid_steps.rows.size();
+  ASSERT_EQ(windows, static_cast<std::size_t>(std::ceil(kEndTime / kSolidDt)));
+  for (std::size_t w = 0; w + 1 < windows; ++w) {
+    EXPECT_NEAR(solid_steps.at(w, "dt"), kSolidDt, 1e-12) << "window " << w;
+    for (std::size_t k : {2 * w, 2 * w + 1}) {
+      EXPECT_NEAR(fluid_steps.at(k, "dt"), 0.5 * kSolidDt, 1e-12) << "sub-step " << k;
+      // Held over the window: what the solid received, opposite.
+      EXPECT_NEAR(fluid_steps.at(k, "sum_max"), -solid_steps.at(w, "sum_max"),
+                  1e-12 * std::abs(solid_steps.at(w, "sum_max")))
+          << "sub-step " << k;
+    }
+  }
+  // The last window is cut to land on end_time, where both sides end.
+  const std::size_t last_solid = windows - 1, last_fluid = fluid_steps.rows.size() - 1;
+  EXPECT_NEAR(solid_steps.at(last_solid, "t") + solid_steps.at(last_solid, "dt"), kEndTime, 1e-12);
+  EXPECT_NEAR(fluid_steps.at(last_fluid, "t") + fluid_steps.at(last_fluid, "dt"), kEndTime, 1e-12);
 }
 
 // Expects every process to have ended by itself before the deadline and been reaped.

@@ -3,7 +3,10 @@
 //
 // Per step: begin_step(dt) (kick, drift, own forces), one exchange with the
 // coupler (interface out; cross-phase accelerations and density rates, the
-// next dt and the stop flag in), end_step(dt) (kick). The coupler writes timeseries.csv from the
+// next dt and the stop flag in), end_step(dt) (kick). In a multi-rate run the
+// coupler's step is a window that the solver covers in as many sub-steps as
+// its own stability needs, the cross-phase terms held over it, and exchanges
+// once, at the window's end. The coupler writes timeseries.csv from the
 // gauges each solver sends; each solver writes its own snapshots.
 //
 // Solver needs: begin_step, end_step, step_limits, collect_interface,
@@ -12,6 +15,7 @@
 // set_interface_density_rates.
 #pragma once
 
+#include <cmath>
 #include <string>
 
 #include "participant/participant.hpp"
@@ -30,6 +34,13 @@ struct CoupledRunSettings {
   std::string endpoint;
   double timeout_seconds;
 };
+
+// The sub-steps a solver takes to cover the coupler's window with steps no
+// larger than the one it proposed (1 when the window is that step or smaller).
+inline int substeps_for(double window, double proposed_dt) {
+  const double ratio = window / proposed_dt;
+  return ratio <= 1.0 ? 1 : static_cast<int>(std::ceil(ratio * (1.0 - 1e-12)));
+}
 
 template <class Solver>
 class CoupledRun {
@@ -63,7 +74,7 @@ class CoupledRun {
         settings_.phase, settings_.solver_description, solver_.particles().size(),
         solver_.max_smoothing_length(), solver_.interaction_bounds());
     sph::ProgressReporter progress(run_.end_time);
-    StepReply reply = exchange(region, solver_.time(), solver_.steps());
+    StepReply reply = exchange(region, solver_.time(), windows_);
     double next_snapshot = 0.0;
     for (;;) {
       if (solver_.time() >= next_snapshot || reply.stop) {
@@ -76,11 +87,14 @@ class CoupledRun {
         participant_.report_error(settings_.name + " was interrupted (Ctrl-C or SIGTERM)");
         return 130;
       }
-      const double dt = reply.dt;
-      solver_.begin_step(dt);
-      // The interface has moved to t + dt: label it so (end_step advances time() only later).
-      reply = exchange(reply.send_region, solver_.time() + dt, solver_.steps() + 1);
-      solver_.end_step(dt);
+      const int substeps = substeps_for(reply.dt, proposed_dt_);
+      const double dt = reply.dt / substeps;
+      for (int k = 1; k <= substeps; ++k) {
+        solver_.begin_step(dt);
+        // The interface has moved to t + dt: label it so (end_step advances time() only later).
+        if (k == substeps) reply = exchange(reply.send_region, solver_.time() + dt, ++windows_);
+        solver_.end_step(dt);
+      }
       progress.report(solver_.time(), solver_.steps(), dt);
     }
     progress.report(solver_.time(), solver_.steps(), 0.0, true);
@@ -89,9 +103,10 @@ class CoupledRun {
 
   StepReply exchange(const sph::Region& region, double time, long step) {
     solver_.collect_interface(region, interface_);
-    StepReply reply = participant_.exchange(
-        step, time, solver_.step_limits().smallest(), solver_.interaction_bounds(),
-        solver_.max_smoothing_length(), interface_, solver_.gauge_values());
+    proposed_dt_ = solver_.step_limits().smallest();
+    StepReply reply =
+        participant_.exchange(step, time, proposed_dt_, solver_.interaction_bounds(),
+                              solver_.max_smoothing_length(), interface_, solver_.gauge_values());
     solver_.set_interface_accelerations(reply.acceleration);
     // Only a solver with a use for the other phase's share in its continuity
     // (the fluid) takes it; a solid model need not know of it.
@@ -111,6 +126,8 @@ class CoupledRun {
   sph::SnapshotWriter snapshots_;
   Participant participant_;
   sph::InterfaceParticles interface_;
+  double proposed_dt_ = 0.0;  // at the last exchange: sub-steps are no larger
+  long windows_ = 0;          // exchanges so far after the first: the coupler's step count
   std::string last_snapshot_ = "(none yet)";
   double last_time_ = 0.0;
 };
