@@ -37,6 +37,11 @@ void compute_rates(SolidParticles& P, const sph::CellGrid& grid, const SolidPara
     const double rho_i = P.rho[i];
     std::vector<Neighbour>& neighbours = P.neighbours[i];
     neighbours.clear();
+    if (P.inert[i]) {
+      P.drho[i] = 0.0;
+      P.ds[i] = Mat2::Zero();
+      continue;
+    }
     Mat2 M = Mat2::Zero(), grad_v_raw = Mat2::Zero();
     double drho_i = 0.0;
     grid.for_each_candidate_range(x_i, [&](int begin, int end) {

@@ -28,6 +28,9 @@ struct SolidParticles {
   std::vector<Mat2> s;          // deviatoric stress
   std::vector<double> K, G, c;  // material: bulk and shear moduli, P-wave speed
   std::vector<std::uint8_t> clamped, failed;
+  // Clamped and out of reach of every particle that can move: its velocity
+  // gradient, hence its rates, are zero for good, so the passes skip it.
+  std::vector<std::uint8_t> inert;
   // Acceleration imposed from outside (the coupler's fluid forces); zero alone.
   std::vector<Vec2> external_a;
 
@@ -58,6 +61,7 @@ struct SolidParticles {
     c.push_back(sound_speed);
     clamped.push_back(is_clamped ? 1 : 0);
     failed.push_back(0);
+    inert.push_back(0);
     external_a.push_back(Vec2::Zero());
   }
 

@@ -19,6 +19,7 @@ SolidSolver::SolidSolver(const sph::CaseFile& case_file, const SolidParameters& 
     : parameters_(parameters), particles_(build_solid_scene(case_file, parameters)) {
   if (parameters_.tip_gauge)
     tip_ids_ = tip_gauge_ids(particles_, *parameters_.tip_gauge, parameters_.dx);
+  mark_inert_clamp();
   sort_and_find_neighbours();
   compute_rates(particles_, grid_, parameters_);  // for the renormalisation matrices
   update_stress();
@@ -29,7 +30,20 @@ void SolidSolver::sort_and_find_neighbours() {
   SolidParticles& P = particles_;
   grid_.build(P.x, sph::kernel::kSupport * parameters_.h);
   sph::permute(grid_.order(), P.id, P.x, P.v, P.x0, P.rho, P.m, P.s, P.K, P.G, P.c, P.clamped,
-               P.failed, P.external_a);
+               P.failed, P.inert, P.external_a);
+}
+
+void SolidSolver::mark_inert_clamp() {
+  SolidParticles& P = particles_;
+  // Twice the support: a free particle near the root may move a little closer.
+  const double reach = 2.0 * sph::kernel::kSupport * parameters_.h;
+  std::vector<Vec2> free;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (!P.clamped[i]) free.push_back(P.x[i]);
+  for (std::size_t i = 0; i < P.size(); ++i)
+    P.inert[i] = P.clamped[i] && std::none_of(free.begin(), free.end(), [&](const Vec2& x) {
+                   return (x - P.x[i]).squaredNorm() < reach * reach;
+                 });
 }
 
 void SolidSolver::update_stress() {

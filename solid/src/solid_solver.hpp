@@ -67,6 +67,7 @@ class SolidSolver {
 
  private:
   void sort_and_find_neighbours();
+  void mark_inert_clamp();
   void update_stress();
   void check_state() const;
 
