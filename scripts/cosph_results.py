@@ -3,6 +3,7 @@ running a case through the launcher, error norms, writing result tables.
 
 Run the scripts with /usr/bin/python3 (Debian's numpy, matplotlib, h5py).
 """
+import json
 import os
 import subprocess
 import sys
@@ -71,4 +72,14 @@ def write_table(name, header, rows, preamble=""):
     path = os.path.join(RESULTS, name + ".md")
     with open(path, "w") as f:
         f.write("\n".join(lines) + "\n")
+    return path
+
+
+def write_points(name, points):
+    """docs/results/NAME_points.json: runs as (series, label, wall_s, error,
+    error_name), the input of scripts/speed_accuracy.py."""
+    os.makedirs(RESULTS, exist_ok=True)
+    path = os.path.join(RESULTS, name + "_points.json")
+    with open(path, "w") as f:
+        json.dump(points, f, indent=1)
     return path

@@ -42,7 +42,7 @@ def main():
     mps_rms, mps_max = cr.rms_relative_error(T_mps, Z_mps, T_exp[window], Z_exp[window])
 
     fig, (ax_front, ax_height) = plt.subplots(1, 2, figsize=(11, 4.5))
-    rows = []
+    rows, points = [], []
     for dx in args.spacings:
         out = os.path.join(args.out, f"dx_{dx:g}")
         wall = cr.run_case("dam_break", out, [f"fluid.spacing={dx}"])
@@ -52,9 +52,12 @@ def main():
         particles = int(series["water_particles"][0])
         rows.append([f"{dx * 1e3:g}", particles, f"{100 * rms:.1f} %", f"{100 * worst:.1f} %",
                      f"{wall:.1f} s"])
+        points.append({"series": "dam break", "label": f"dx = {dx * 1e3:g} mm", "wall_s": wall,
+                       "error": 100 * rms, "error_name": "front RMS rel. error (%)"})
         label = f"cosph, dx = {dx * 1e3:g} mm ({particles} particles): RMS {100 * rms:.1f} %"
         ax_front.plot(T, Z, label=label)
         ax_height.plot(T, H / 2, label=f"dx = {dx * 1e3:g} mm")
+    cr.write_points("dam_break", points)
     rows.append(["Koshizuka & Oka MPS", "", f"{100 * mps_rms:.1f} %", f"{100 * mps_max:.1f} %", ""])
 
     ax_front.plot(T_exp, Z_exp, "ko", label="Martin & Moyce 1952 (experiment)")
