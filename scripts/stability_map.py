@@ -15,7 +15,7 @@ with an error is a result, not a failure of this script):
 (Artificial stress off against on: scripts/tensile_instability.py.)
 
 Writes docs/results/stability_map.md and docs/figures/stability_cfl.png.
-usage: /usr/bin/python3 scripts/stability_map.py [--out DIR]
+usage: /usr/bin/python3 scripts/stability_map.py [--out DIR] [--reuse]
 """
 import argparse
 import glob
@@ -48,8 +48,17 @@ SCENES = {  # name: (case, settings, end time)
 }
 
 
+REUSE = False  # --reuse: read runs already in --out instead of running them again
+
+
 def launch(case, out, settings, end_time):
-    """Runs a case; returns (reached time, median dt, error line or '', wall seconds)."""
+    """Runs a case (or, with --reuse, reads its earlier run); returns (reached
+    time, median dt, error line or '', wall seconds)."""
+    log_path = os.path.join(out, "launcher.log")
+    if REUSE and os.path.exists(log_path):
+        with open(log_path) as log:
+            wall, output, code = float(log.readline()), log.read(), None
+        return summarise(out, output, wall, code, " ".join([case] + settings))
     command = [os.path.join(cr.REPO, "coupler", "cosph"), "run", case, "--out", out, "--quiet",
                "--set", f"run.end_time={end_time}", "--set", f"run.snapshot_interval={end_time}"]
     for setting in settings:
@@ -58,12 +67,17 @@ def launch(case, out, settings, end_time):
     result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                             timeout=3600)
     wall = time.monotonic() - start
-    error = ""
-    if result.returncode != 0:
-        lines = [line for line in result.stdout.splitlines() if "error:" in line]
-        if not lines:
-            raise RuntimeError(f"{' '.join(command)} failed without a message:\n{result.stdout}")
-        error = lines[0]
+    os.makedirs(out, exist_ok=True)
+    with open(log_path, "w") as log:
+        log.write(f"{wall}\n{result.stdout}")
+    return summarise(out, result.stdout, wall, result.returncode, " ".join(command))
+
+
+def summarise(out, output, wall, returncode, command):
+    lines = [line for line in output.splitlines() if "error:" in line]
+    if returncode not in (0, None) and not lines:
+        raise RuntimeError(f"{command} failed without a message:\n{output}")
+    error = lines[0] if lines else ""
     series_path = os.path.join(out, "timeseries.csv")
     series = cr.read_csv(series_path) if os.path.exists(series_path) else None
     if series is None or len(series["t"]) == 0:
@@ -168,7 +182,11 @@ def draw(curves, path):
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default=os.path.join(cr.REPO, "out", "stability"))
+    parser.add_argument("--reuse", action="store_true",
+                        help="read the runs already in --out; run only the missing ones")
     args = parser.parse_args()
+    global REUSE
+    REUSE = args.reuse
     os.makedirs(args.out, exist_ok=True)
 
     cfl_rows, curves = cfl_sweeps(args.out)

@@ -11,10 +11,10 @@ RunParameters read_run_parameters(const CaseFile& case_file) {
   require(run.output_interval() >= 0.0, case_file, "run.output_interval", "must not be negative");
   require(run.snapshot_interval() >= 0.0, case_file, "run.snapshot_interval",
           "must not be negative");
-  // Up to 4 so that scripts/stability_map.py can find where the step breaks;
+  // Up to 8 so that scripts/stability_map.py can find where the step breaks;
   // SPEC.md's range is 0.2 to 0.3.
-  require(run.cfl() >= 0.0 && run.cfl() <= 4.0, case_file, "run.cfl",
-          "must lie in (0, 4], got " + format_number(run.cfl()));
+  require(run.cfl() >= 0.0 && run.cfl() <= 8.0, case_file, "run.cfl",
+          "must lie in (0, 8], got " + format_number(run.cfl()));
   require(run.threads() >= 0, case_file, "run.threads", "must not be negative");
   RunParameters p;
   p.end_time = run.end_time();
