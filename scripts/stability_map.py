@@ -44,6 +44,9 @@ SCENES = {  # name: (case, settings, end time)
     "fluid alone (dam break, 8 mm)": ("dam_break", [], 0.3),
     "solid alone (oscillating plate, 6 across)": (
         "oscillating_plate", ["solid.spacing=0.0033333333333333"], 0.1),
+    "solid alone, total-Lagrangian (same plate)": (
+        "oscillating_plate", ["solid.spacing=0.0033333333333333", "solid.model=total_lagrangian"],
+        0.1),
     "coupled elastic plate (multi-rate)": ("elastic_plate", MULTIRATE, 0.03),
 }
 
@@ -100,7 +103,8 @@ def cfl_sweeps(out_root):
         cfls = COUPLED_CFLS if case == "elastic_plate" else CFLS
         curve = []
         for cfl in cfls:
-            out = os.path.join(out_root, f"cfl_{case}_{cfl}")
+            model = "_tl" if "solid.model=total_lagrangian" in settings else ""
+            out = os.path.join(out_root, f"cfl_{case}{model}_{cfl}")
             reached, dt, error, wall = launch(case, out, settings + [f"run.cfl={cfl}"], end)
             stable = not error and reached >= end * (1 - 1e-9)
             curve.append((cfl, stable, dt))
