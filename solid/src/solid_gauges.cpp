@@ -27,6 +27,17 @@ Vec2 mean_displacement(const std::vector<int>& id, const std::vector<Vec2>& x,
   return tip_ids.empty() ? sum : Vec2(sum / static_cast<double>(tip_ids.size()));
 }
 
+Vec2 broken_part_centre(const SolidParticles& P, double below_y) {
+  Vec2 moment = Vec2::Zero();
+  double mass = 0.0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.clamped[i] || P.x0[i].y() >= below_y) continue;
+    moment += P.m[i] * P.x[i];
+    mass += P.m[i];
+  }
+  return mass > 0.0 ? Vec2(moment / mass) : Vec2::Zero();
+}
+
 SolidGauges measure(const SolidParticles& P, const std::vector<int>& tip_ids) {
   SolidGauges g{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0};
   const Vec2 tip = mean_displacement(P.id, P.x, P.x0, tip_ids);

@@ -31,6 +31,11 @@ inline std::vector<int> tip_gauge_ids(const SolidParticles& particles, const sph
 Vec2 mean_displacement(const std::vector<int>& id, const std::vector<Vec2>& x,
                        const std::vector<Vec2>& x0, const std::vector<int>& tip_ids);
 
+// Centre of mass of the free (not clamped) particles whose initial y lies
+// below `below_y`: in the fracture scene, the part a crack above that height
+// breaks off (before it breaks, the bending plate's lower part). Zero for none.
+Vec2 broken_part_centre(const SolidParticles& particles, double below_y);
+
 SolidGauges measure(const SolidParticles& particles, const std::vector<int>& tip_ids);
 
 }  // namespace cosph::solid

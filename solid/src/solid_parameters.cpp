@@ -1,5 +1,6 @@
 #include "solid_parameters.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "hooke_pressure.hpp"
@@ -48,7 +49,12 @@ FractureParameters read_fracture(const sph::CaseFile& case_file, double dx, doub
     const std::string field = "solid.fracture.weakened[" + std::to_string(k) + "]";
     check_elastic(case_file, field, weak.youngs_modulus(), nu);
     check_box(case_file, field + ".region", weak.region(), dx);
-    p.weakened.push_back({weak.region(), weak.youngs_modulus()});
+    require(
+        weak.yield_stress() >= 0.0, case_file, field + ".yield_stress",
+        "must not be negative (0: the body's), got " + format_number(weak.yield_stress()) + " Pa");
+    p.weakened.push_back(
+        {weak.region(), weak.youngs_modulus(),
+         weak.yield_stress() > 0.0 ? std::optional<double>(weak.yield_stress()) : std::nullopt});
   }
   return p;
 }
@@ -121,6 +127,22 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
           "solid.hourglass_control",
           "must not be negative (0 turns it off), got " + format_number(solid.hourglass_control()));
   p.hourglass_alpha = solid.has_hourglass_control() ? solid.hourglass_control() : 10.0;
+  if (solid.has_broken_part_below_y()) {
+    const double top = solid.broken_part_below_y();
+    const bool below_some_body = std::any_of(solid.body().begin(), solid.body().end(),
+                                             [&](const auto& box) { return box.min().y() < top; });
+    require(
+        below_some_body, case_file, "solid.broken_part_below_y",
+        "no solid lies below it (" + format_number(top) + " m): the broken part would be empty");
+    p.broken_part_below_y = top;
+  }
+  for (int k = 0; k < solid.walls_size(); ++k) {
+    const auto& wall = solid.walls(k);
+    check_box(case_file, "solid.walls[" + std::to_string(k) + "]", wall, p.dx);
+    const sph::Region region{sph::Vec2(wall.min().x(), wall.min().y()),
+                             sph::Vec2(wall.max().x(), wall.max().y())};
+    p.walls.push_back(region.grown(0.5 * p.dx));
+  }
   if (solid.has_tip_gauge()) p.tip_gauge = sph::Vec2(solid.tip_gauge().x(), solid.tip_gauge().y());
   return p;
 }

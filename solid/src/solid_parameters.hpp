@@ -6,6 +6,7 @@
 
 #include "case.pb.h"
 #include "sphcore/case_file.hpp"
+#include "sphcore/interface_particles.hpp"
 #include "sphcore/run_parameters.hpp"
 #include "sphcore/types.hpp"
 
@@ -20,11 +21,12 @@ struct ArtificialStressParameters {
 struct WeakRegion {
   cosph::config::Box region;
   double E;
+  std::optional<double> yield_stress;  // the body's when absent
 };
 
 struct FractureParameters {
   bool enabled;
-  double yield_stress;               // sigma_y
+  double yield_stress;               // sigma_y of the body
   std::vector<WeakRegion> weakened;  // applies whether or not failure is enabled
 };
 
@@ -52,7 +54,10 @@ struct SolidParameters {
   FractureParameters fracture;
   std::optional<BendingModeParameters> bending_mode;
   std::optional<sph::Vec2> tip_gauge;
-  double hourglass_alpha;  // total_lagrangian: hourglass control (Ganzenmueller 2015)
+  std::optional<double> broken_part_below_y;
+  std::vector<sph::Region> walls;  // rigid walls grown by dx/2 (wall_contact.hpp)  // broken_x,
+                                   // broken_y gauges (fracture scene)
+  double hourglass_alpha;          // total_lagrangian: hourglass control (Ganzenmueller 2015)
 };
 
 // Throws sph::ConfigError naming the file, field and reason for bad input.

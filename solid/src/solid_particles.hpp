@@ -27,6 +27,7 @@ struct SolidParticles {
   std::vector<double> rho, m;
   std::vector<Mat2> s;          // deviatoric stress
   std::vector<double> K, G, c;  // material: bulk and shear moduli, P-wave speed
+  std::vector<double> sigma_y;  // material: von Mises yield stress (used when fracture is on)
   std::vector<std::uint8_t> clamped, failed;
   // Clamped and out of reach of every particle that can move: its velocity
   // gradient, hence its rates, are zero for good, so the passes skip it.
@@ -48,7 +49,7 @@ struct SolidParticles {
   std::size_t size() const { return x.size(); }
 
   void add(int particle_id, const Vec2& position, double density, double mass, double bulk,
-           double shear, double sound_speed, bool is_clamped) {
+           double shear, double sound_speed, bool is_clamped, double yield_stress = 0.0) {
     id.push_back(particle_id);
     x.push_back(position);
     x0.push_back(position);
@@ -59,6 +60,7 @@ struct SolidParticles {
     K.push_back(bulk);
     G.push_back(shear);
     c.push_back(sound_speed);
+    sigma_y.push_back(yield_stress);
     clamped.push_back(is_clamped ? 1 : 0);
     failed.push_back(0);
     inert.push_back(0);

@@ -17,6 +17,15 @@ double youngs_modulus_at(const Vec2& x, const SolidParameters& p) {
   return E;
 }
 
+// Yield stress at x: that of the last weakened region containing it that
+// gives one, else the body's.
+double yield_stress_at(const Vec2& x, const SolidParameters& p) {
+  double sigma_y = p.fracture.yield_stress;
+  for (const WeakRegion& weak : p.fracture.weakened)
+    if (weak.yield_stress && sph::contains(weak.region, x)) sigma_y = *weak.yield_stress;
+  return sigma_y;
+}
+
 double initial_vertical_speed(const Vec2& x, const BendingModeParameters& mode) {
   const double s = x.x() - mode.root_x;
   if (s <= 0.0) return 0.0;
@@ -43,7 +52,7 @@ SolidParticles build_solid_scene(const sph::CaseFile& case_file, const SolidPara
       const double E = youngs_modulus_at(x, p);
       const double K = bulk_modulus(E, p.nu), G = shear_modulus(E, p.nu);
       particles.add(next_id++, x, p.rho0, mass, K, G, longitudinal_sound_speed(K, G, p.rho0),
-                    clamped);
+                    clamped, yield_stress_at(x, p));
       if (p.bending_mode && !clamped)
         particles.v.back() = Vec2(0.0, initial_vertical_speed(x, *p.bending_mode));
     }

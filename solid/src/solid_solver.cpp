@@ -12,6 +12,7 @@
 #include "sphcore/permutation.hpp"
 #include "sphcore/runaway_error.hpp"
 #include "von_mises_failure.hpp"
+#include "wall_contact.hpp"
 
 namespace cosph::solid {
 
@@ -29,8 +30,8 @@ SolidSolver::SolidSolver(const sph::CaseFile& case_file, const SolidParameters& 
 void SolidSolver::sort_and_find_neighbours() {
   SolidParticles& P = particles_;
   grid_.build(P.x, sph::kernel::kSupport * parameters_.h);
-  sph::permute(grid_.order(), P.id, P.x, P.v, P.x0, P.rho, P.m, P.s, P.K, P.G, P.c, P.clamped,
-               P.failed, P.inert, P.external_a);
+  sph::permute(grid_.order(), P.id, P.x, P.v, P.x0, P.rho, P.m, P.s, P.K, P.G, P.c, P.sigma_y,
+               P.clamped, P.failed, P.inert, P.external_a);
 }
 
 void SolidSolver::mark_inert_clamp() {
@@ -52,10 +53,13 @@ void SolidSolver::update_stress() {
   const long n = static_cast<long>(P.size());
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
+    // A failed particle carries no tension, so it has no expanded state: as it
+    // separates from the body, continuity would thin its density without
+    // limit; it stays at rho0, and resists at once when pushed back.
+    if (P.failed[i]) P.rho[i] = std::max(P.rho[i], par.rho0);
     P.p[i] = hooke_pressure(P.K[i], P.rho[i], par.rho0);
     const Mat2 sigma = -P.p[i] * Mat2::Identity() + P.s[i];
-    if (par.fracture.enabled && !P.failed[i] && yields(sigma, par.fracture.yield_stress))
-      P.failed[i] = 1;
+    if (par.fracture.enabled && !P.failed[i] && yields(sigma, P.sigma_y[i])) P.failed[i] = 1;
     if (P.failed[i]) P.s[i] = Mat2::Zero();
     P.sigma[i] = P.failed[i] ? failed_stress(P.p[i]) : sigma;
     P.sigma_L[i] = P.sigma[i] * P.L[i];
@@ -86,6 +90,7 @@ void SolidSolver::begin_step(double dt) {
     if (P.clamped[i]) continue;
     P.v[i] += half * (P.a[i] + P.external_a[i]);
     P.x[i] += dt * P.v[i];
+    for (const sph::Region& wall : parameters_.walls) push_out_of_wall(wall, P.x[i], P.v[i]);
   }
   sort_and_find_neighbours();
   compute_rates(P, grid_, parameters_);
@@ -134,13 +139,19 @@ sph::Region SolidSolver::interaction_bounds() const {
 
 std::vector<sph::Gauge> SolidSolver::gauge_values() const {
   const SolidGauges g = gauges();
-  return {{"tip_dx", "m", g.tip_dx},
-          {"tip_dy", "m", g.tip_dy},
-          {"kinetic_energy", "J/m", g.kinetic_energy},
-          {"elastic_energy", "J/m", g.elastic_energy},
-          {"max_speed", "m/s", g.max_speed},
-          {"max_von_mises", "Pa", g.max_von_mises},
-          {"failed", "1", static_cast<double>(g.failed)}};
+  std::vector<sph::Gauge> values{{"tip_dx", "m", g.tip_dx},
+                                 {"tip_dy", "m", g.tip_dy},
+                                 {"kinetic_energy", "J/m", g.kinetic_energy},
+                                 {"elastic_energy", "J/m", g.elastic_energy},
+                                 {"max_speed", "m/s", g.max_speed},
+                                 {"max_von_mises", "Pa", g.max_von_mises},
+                                 {"failed", "1", static_cast<double>(g.failed)}};
+  if (parameters_.broken_part_below_y) {
+    const Vec2 centre = broken_part_centre(particles_, *parameters_.broken_part_below_y);
+    values.push_back({"broken_x", "m", centre.x()});
+    values.push_back({"broken_y", "m", centre.y()});
+  }
+  return values;
 }
 
 void SolidSolver::check_state() const {

@@ -61,6 +61,9 @@ class SolidSolver {
   double time() const { return time_; }
   long steps() const { return steps_; }
   const SolidParticles& particles() const { return particles_; }
+  // For tests that set up a state the case cannot describe (a velocity field);
+  // the next step recomputes everything derived from it.
+  SolidParticles& particles() { return particles_; }
   const SolidParameters& parameters() const { return parameters_; }
   SolidGauges gauges() const { return measure(particles_, tip_ids_); }
   sph::Snapshot snapshot() const;

@@ -2,7 +2,8 @@
 // stress sigma_VM reaches the yield stress sigma_y fails, for good. A failed
 // particle is crushed material: it still resists compression (its pressure
 // P >= 0), but carries no tension and no shear, so it is free to separate
-// from the body.
+// from the body. Its density does not fall below rho0 (solid_solver.cpp):
+// separating is not stretching.
 #pragma once
 
 #include <algorithm>
