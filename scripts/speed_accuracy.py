@@ -17,6 +17,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.ticker import FormatStrFormatter  # noqa: E402
 
 import cosph_results as cr  # noqa: E402
 
@@ -42,6 +43,9 @@ def main():
                 ax.annotate(run["label"].split(", ")[-1], (run["wall_s"], run["error"]),
                             fontsize=7, xytext=(4, 4), textcoords="offset points")
         ax.set(xscale="log", yscale="log", xlabel="wall time on 2 cores (s)", ylabel=error_name)
+        for axis in (ax.yaxis,):
+            axis.set_major_formatter(FormatStrFormatter("%g"))
+            axis.set_minor_formatter(FormatStrFormatter("%g"))
         ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(cr.FIGURES, "speed_accuracy.png"), dpi=110)

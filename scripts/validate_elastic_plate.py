@@ -149,13 +149,14 @@ def main():
             ref = cr.reference(f"elastic_gate_num_{key}_{axis}.csv")
             errors.append(cr.rms_error(ref["t_s"], ref[f"d{axis}_m"], experiment[axis]["t_s"],
                                        experiment[axis][f"d{axis}_m"]))
-            axes[k].plot(ref["t_s"], 1e3 * ref[f"d{axis}_m"], "--", lw=1,
+            style = ["--", ":", "-."][PUBLISHED.index((label, key))]
+            axes[k].plot(ref["t_s"], 1e3 * ref[f"d{axis}_m"], style, color="0.45", lw=1.2,
                          label=f"{label}: RMS {1e3 * errors[-1]:.1f} mm")
         rows.append([label, f"{1e3 * errors[0]:.1f}", f"{1e3 * errors[1]:.1f}", "0.400", "", "", ""])
     for k, axis in enumerate("xy"):
         axes[k].set(xlabel="t (s)", ylabel=f"free-end displacement d{axis} (mm)", xlim=(0, 0.4),
                     title=f"Plate tip, {axis}")
-        axes[k].legend(fontsize=7)
+        axes[k].legend(fontsize=6.5, loc="lower right")
     fig.tight_layout()
     os.makedirs(cr.FIGURES, exist_ok=True)
     fig.savefig(os.path.join(cr.FIGURES, "elastic_plate_tip.png"), dpi=110)
@@ -177,7 +178,7 @@ def main():
         preamble="Free-end displacement against Antoci et al. 2007, RMS over the experimental "
                  f"points ({len(experiment['x']['t_s'])} in x, {len(experiment['y']['t_s'])} in y, "
                  f"t <= {experiment['x']['t_s'][-1]:.2f} s), by `scripts/validate_elastic_plate.py`: "
-                 "water 2 mm, plate 1 mm. The coupler's own share is the part of its time spent "
+                 "water 2 mm, plate 1 mm unless the row says otherwise. The coupler's own share is the part of its time spent "
                  "on messaging and pair forces; the rest it waits for the solvers.\n\n"
                  + "\n".join(f"- {note}" for note in notes))
     cr.write_points("elastic_plate", points)
