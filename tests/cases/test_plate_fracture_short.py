@@ -20,7 +20,7 @@ import numpy as np
 REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 END_TIME = 0.04  # s
 SHORT_MODE = ["--set", f"run.end_time={END_TIME}", "--set", "run.snapshot_interval=0.01",
-              "--set", "coupling.max_substeps=32",
+              "--set", "coupling.max_substeps=32", "--set", "coupling.timeout=60",
               "--set", "solid.fracture.weakened[0].yield_stress=4000"]
 
 
