@@ -223,7 +223,7 @@ def main():
     preamble.append(
         "Why sigma_y = 20 kPa: the study gives no yield stress. Unbroken, the soft band "
         "becomes a hinge and the plate below swings out; the band's stress grows with the "
-        "hinge's angle (calibration below). sigma_y is about two thirds of the band's stress at "
+        "hinge's angle (calibration above). sigma_y is about two thirds of the band's stress at "
         "0.1 s, so the band yields at about 0.07 s and the piece is free and carried away well "
         "before the snapshots of the study's Fig. 8 (0.10 to 0.25 s); it is a strain "
         "sigma_y / E = 1/6 in the band. The rest of the plate keeps a rubber's strength, "
