@@ -138,11 +138,7 @@ class DummySolver {
     for (const Vec2& a_i : a) force_ += mass() * a_i;
   }
 
-  sph::Region interaction_bounds() const {
-    sph::Region bounds;
-    for (const Vec2& x : x_) bounds.include(x);
-    return bounds;
-  }
+  sph::Region interaction_bounds() const { return sph::bounds_of(x_); }
   double max_smoothing_length() const { return h_; }
   std::vector<sph::Gauge> gauge_values() const {
     std::vector<sph::Gauge> gauges{{o_.phase + "_force_x", "N/m", force_.x()},

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "solid_particles.hpp"
+#include "sphcore/interface_particles.hpp"
 #include "sphcore/types.hpp"
 
 namespace cosph::solid {
@@ -16,6 +17,17 @@ struct SolidGauges {
   double max_von_mises;
   long failed;  // failed particles
 };
+
+// The columns every solid model writes to timeseries.csv, named and with units.
+inline std::vector<sph::Gauge> named_gauges(const SolidGauges& g) {
+  return {{"tip_dx", "m", g.tip_dx},
+          {"tip_dy", "m", g.tip_dy},
+          {"kinetic_energy", "J/m", g.kinetic_energy},
+          {"elastic_energy", "J/m", g.elastic_energy},
+          {"max_speed", "m/s", g.max_speed},
+          {"max_von_mises", "Pa", g.max_von_mises},
+          {"failed", "1", static_cast<double>(g.failed)}};
+}
 
 // The particles a tip gauge at point p follows: those nearest p at the start
 // (several when p lies midway between lattice sites, as a plate's mid-line

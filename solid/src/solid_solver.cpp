@@ -132,20 +132,11 @@ void SolidSolver::set_interface_accelerations(const std::vector<Vec2>& accelerat
 }
 
 sph::Region SolidSolver::interaction_bounds() const {
-  sph::Region bounds;
-  for (const Vec2& x : particles_.x) bounds.include(x);
-  return bounds;
+  return sph::bounds_of(particles_.x);
 }
 
 std::vector<sph::Gauge> SolidSolver::gauge_values() const {
-  const SolidGauges g = gauges();
-  std::vector<sph::Gauge> values{{"tip_dx", "m", g.tip_dx},
-                                 {"tip_dy", "m", g.tip_dy},
-                                 {"kinetic_energy", "J/m", g.kinetic_energy},
-                                 {"elastic_energy", "J/m", g.elastic_energy},
-                                 {"max_speed", "m/s", g.max_speed},
-                                 {"max_von_mises", "Pa", g.max_von_mises},
-                                 {"failed", "1", static_cast<double>(g.failed)}};
+  std::vector<sph::Gauge> values = named_gauges(gauges());
   if (parameters_.broken_part_below_y) {
     const Vec2 centre = broken_part_centre(particles_, *parameters_.broken_part_below_y);
     values.push_back({"broken_x", "m", centre.x()});

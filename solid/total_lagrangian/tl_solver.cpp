@@ -89,9 +89,7 @@ void TLSolver::set_interface_accelerations(const std::vector<Vec2>& acceleration
 }
 
 sph::Region TLSolver::interaction_bounds() const {
-  sph::Region bounds;
-  for (const Vec2& x : particles_.x) bounds.include(x);
-  return bounds;
+  return sph::bounds_of(particles_.x);
 }
 
 SolidGauges TLSolver::gauges() const {
@@ -112,14 +110,7 @@ SolidGauges TLSolver::gauges() const {
 }
 
 std::vector<sph::Gauge> TLSolver::gauge_values() const {
-  const SolidGauges g = gauges();
-  return {{"tip_dx", "m", g.tip_dx},
-          {"tip_dy", "m", g.tip_dy},
-          {"kinetic_energy", "J/m", g.kinetic_energy},
-          {"elastic_energy", "J/m", g.elastic_energy},
-          {"max_speed", "m/s", g.max_speed},
-          {"max_von_mises", "Pa", g.max_von_mises},
-          {"failed", "1", static_cast<double>(g.failed)}};
+  return named_gauges(gauges());
 }
 
 void TLSolver::check_state() const {

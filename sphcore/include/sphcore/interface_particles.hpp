@@ -35,6 +35,13 @@ struct Region {
   }
 };
 
+// The box around every position: a solver's interaction bounds.
+inline Region bounds_of(const std::vector<Vec2>& positions) {
+  Region bounds;
+  for (const Vec2& x : positions) bounds.include(x);
+  return bounds;
+}
+
 struct InterfaceParticles {
   std::vector<long> id;
   std::vector<Vec2> x, v;
