@@ -1,5 +1,9 @@
 #include "participant/protocol.hpp"
 
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+
 namespace cosph::coupling {
 
 const char* phase_name(Phase phase) {
@@ -117,9 +121,20 @@ void send_to(zmq::socket_t& socket, const std::string& identity, const Envelope&
 }
 
 namespace {
+// A signal (the launcher's, a child's) interrupts the poll with EINTR: wait
+// on for what is left of the timeout; a stop request is seen between steps.
 bool wait_readable(zmq::socket_t& socket, std::chrono::milliseconds timeout) {
-  zmq::pollitem_t item{socket.handle(), 0, ZMQ_POLLIN, 0};
-  return zmq::poll(&item, 1, timeout) > 0;
+  const auto deadline = std::chrono::steady_clock::now() + timeout;
+  for (;;) {
+    zmq::pollitem_t item{socket.handle(), 0, ZMQ_POLLIN, 0};
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+        deadline - std::chrono::steady_clock::now());
+    try {
+      return zmq::poll(&item, 1, std::max(left, std::chrono::milliseconds(0))) > 0;
+    } catch (const zmq::error_t& error) {
+      if (error.num() != EINTR) throw;
+    }
+  }
 }
 }  // namespace
 
