@@ -1,17 +1,20 @@
 // cosph-case: checks a case file before anything runs, and tells the launcher
 // which processes the case needs.
 //   cosph-case plan CASE [--set FIELD=VALUE ...]
-// prints one line, the executables in start order: "cosph-fluid" for water
-// alone, "cosph-solid" for a solid alone, "cosph-coupler cosph-fluid
-// cosph-solid" for a coupled case ("cosph-solid-tl" instead of "cosph-solid"
-// when solid.model is "total_lagrangian").
+// prints the executables in start order, one per line: "cosph-fluid" for
+// water alone, the solid's program for a solid alone, "cosph-coupler",
+// "cosph-fluid" and the solid's program for a coupled case. The solid's
+// program is "cosph-solid" or "cosph-solid-tl" after solid.model, or the
+// absolute path of the program solid.executable names (solid_executable.hpp).
+#include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
 
 #include "fluid_parameters.hpp"
 #include "fluid_scene.hpp"
-#include "solid_parameters.hpp"
+#include "solid_executable.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/run_parameters.hpp"
 #include "sphcore/solver_cli.hpp"
@@ -20,9 +23,26 @@ namespace {
 
 const char* kUsage = "usage: cosph-case plan CASE [--set FIELD=VALUE ...]";
 
+// Where a bare solid.executable is looked up: the launcher's executable folder
+// (COSPH_BIN; unset, the folder of this program, which the launcher started
+// from there), then the case's folder, then PATH.
+cosph::coupling::ExecutableSearch executable_search() {
+  cosph::coupling::ExecutableSearch search;
+  const char* bin = std::getenv("COSPH_BIN");
+  std::error_code error;
+  if (bin != nullptr && *bin != '\0')
+    search.bin_dir = bin;
+  else
+    search.bin_dir = std::filesystem::read_symlink("/proc/self/exe", error).parent_path().string();
+  const char* path = std::getenv("PATH");
+  search.path_dirs = cosph::coupling::split_search_path(path != nullptr ? path : "");
+  return search;
+}
+
 int plan(int argc, char** argv) {
   if (argc >= 2 && (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")) {
-    std::cout << kUsage << "\n\nValidates the case and prints the executables it needs.\n";
+    std::cout << kUsage
+              << "\n\nValidates the case and prints the executables it needs, one per line.\n";
     return 0;
   }
   if (argc < 3 || std::string(argv[1]) != "plan") throw sph::ConfigError(kUsage);
@@ -39,15 +59,11 @@ int plan(int argc, char** argv) {
     const auto parameters = cosph::fluid::read_fluid_parameters(case_file);
     cosph::fluid::check_walls_close(case_file, parameters);
   }
-  // The solid's executable follows its model (solid.model).
-  const std::string solid_exe =
-      solid ? cosph::solid::model_executable(cosph::solid::read_solid_parameters(case_file).model)
-            : "";
-  if (fluid && solid) {
-    std::cout << "cosph-coupler cosph-fluid " << solid_exe << "\n";
-  } else {
-    std::cout << (fluid ? std::string("cosph-fluid") : solid_exe) << "\n";
-  }
+  std::vector<std::string> programs;
+  if (fluid && solid) programs = {"cosph-coupler", "cosph-fluid"};
+  if (fluid && !solid) programs = {"cosph-fluid"};
+  if (solid) programs.push_back(cosph::coupling::solid_program(case_file, executable_search()));
+  for (const std::string& program : programs) std::cout << program << "\n";
   return 0;
 }
 

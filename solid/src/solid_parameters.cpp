@@ -70,7 +70,9 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
   require(
       solid.model().empty() || solid.model() == "jaumann" || solid.model() == "total_lagrangian",
       case_file, "solid.model",
-      "unknown model '" + solid.model() + "' (known: jaumann, total_lagrangian)");
+      "unknown model '" + solid.model() +
+          "' (known: jaumann, total_lagrangian; a solid model of your own: name its program "
+          "in solid.executable)");
   p.model =
       solid.model() == "total_lagrangian" ? SolidModel::total_lagrangian : SolidModel::jaumann;
   require(solid.spacing() > 0.0, case_file, "solid.spacing",
@@ -126,7 +128,8 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
   require(!solid.has_hourglass_control() || solid.hourglass_control() >= 0.0, case_file,
           "solid.hourglass_control",
           "must not be negative (0 turns it off), got " + format_number(solid.hourglass_control()));
-  p.hourglass_alpha = solid.has_hourglass_control() ? solid.hourglass_control() : 10.0;
+  p.hourglass_alpha =
+      solid.has_hourglass_control() ? solid.hourglass_control() : kDefaultHourglassControl;
   if (solid.has_broken_part_below_y()) {
     const double top = solid.broken_part_below_y();
     const bool below_some_body = std::any_of(solid.body().begin(), solid.body().end(),

@@ -34,6 +34,17 @@ struct BendingModeParameters {
   double tip_speed, root_x, length;
 };
 
+// Default of solid.hourglass_control, the alpha of Ganzenmueller's hourglass
+// control (solid/total_lagrangian/hourglass_control.hpp), by a stated rule,
+// not fitted to a scene: the coefficient of the algorithm author's reference
+// implementation, LAMMPS smd/tlsph, whose examples (aluminum_strip_pull,
+// rubber_strip_pull, rubber_rings_3d, fluid_structure_interaction in
+// examples/USER/smd) all use hg = 10. LAMMPS writes the pair's error as
+// delta = 0.5 (gamma . x_ij / r) with gamma the mean of the two predictions, so
+// its force is hg/4 (delta_i + delta_j) where Ganzenmueller 2015 (CMAME 286)
+// writes alpha/2 (delta_i + delta_j): hg = 10 is alpha = 5 here.
+inline constexpr double kDefaultHourglassControl = 5.0;
+
 // The constitutive model, each with its own executable (solid.model).
 enum class SolidModel {
   jaumann,           // cosph-solid: Gray, Monaghan & Swift 2001, Jaumann stress rate
@@ -55,8 +66,7 @@ struct SolidParameters {
   std::optional<BendingModeParameters> bending_mode;
   std::optional<sph::Vec2> tip_gauge;
   std::optional<double> broken_part_below_y;
-  std::vector<sph::Region> walls;  // rigid walls grown by dx/2 (wall_contact.hpp)  // broken_x,
-                                   // broken_y gauges (fracture scene)
+  std::vector<sph::Region> walls;  // rigid walls grown by dx/2 (wall_contact.hpp)
   double hourglass_alpha;          // total_lagrangian: hourglass control (Ganzenmueller 2015)
 };
 

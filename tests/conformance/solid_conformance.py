@@ -6,22 +6,27 @@ Any solid model that takes part in a coupled cosph run must pass it:
     /usr/bin/python3 tests/conformance/solid_conformance.py --solid PATH/TO/SOLID-EXE \
         [--model NAME] [--bin DIR] [unittest options, e.g. -v or a test name]
 
---bin is the folder holding cosph-coupler and cosph-dummy (default: the
-folder of --solid, then build/bin). --model is written as solid.model into
+--bin is the folder holding cosph-case, cosph-coupler and cosph-dummy
+(default: the folder of --solid, then build/bin). --model is written as solid.model into
 the cases (default: "jaumann" for cosph-solid, "total_lagrangian" for
 cosph-solid-tl, otherwise the field is left out).
 
 The solid under test runs against cosph-coupler and a cosph-dummy fluid: a
 block of particles left of x = 0 with a prescribed uniform stress -P I and no
-physics. Every run is tiny (a few hundred particles, seconds). The solid is
-started as the launcher starts it:
+physics. Every run is tiny (a few hundred particles, seconds). Every case
+written here names the solid in solid.executable (its absolute path), as a
+user's case names a solid model of their own (Plan checks that the launcher
+would start this solid for such a case), and the solid is started as the
+launcher starts it:
     SOLID --case CASE --out DIR --endpoint ipc://DIR/coupler.sock
-and must read the fields of the case files written here (proto/case.proto):
+It must read the fields of the case files written here (proto/case.proto):
 run.end_time, output_interval, snapshot_interval, threads; solid.model,
 spacing, density, youngs_modulus, poisson_ratio, body, clamp, tip_gauge;
-coupling.timeout.
+coupling.timeout; and accept solid.executable (the launcher's field).
 
 What is checked (docs/writing_a_solid_model.md explains why):
+  Plan           cosph-case plan, asked which programs a case naming the solid
+                 in solid.executable needs, answers with this solid.
   BadInput       a bad solid parameter is refused naming the case file and the
                  field; with no coupler the solid gives up with a message that
                  names the coupler, within coupling.timeout plus a grace.
@@ -39,6 +44,7 @@ What is checked (docs/writing_a_solid_model.md explains why):
 """
 import argparse
 import glob
+import json
 import os
 import re
 import shutil
@@ -87,6 +93,7 @@ def case_text(body, clamp=None, tip=None, youngs_modulus=1e6, poisson=POISSON, e
         "fluid { spacing: %r }" % dx,
         "solid {",
         model.rstrip("\n"),
+        f"  executable: {json.dumps(SOLID)}",
         f"  spacing: {dx!r} density: {DENSITY!r}",
         f"  youngs_modulus: {youngs_modulus!r} poisson_ratio: {poisson!r}",
         "  body " + box % body,
@@ -232,6 +239,33 @@ def lattice(box, dx=DX):
 
 
 # --------------------------------------------------------------------------
+
+def planned_programs(case_path):
+    """What `cosph-case plan` answers for a case: the programs the launcher starts."""
+    result = subprocess.run([os.path.join(BIN, "cosph-case"), "plan", case_path],
+                            capture_output=True, text=True, timeout=30)
+    return result.returncode, result.stdout.splitlines(), result.stderr
+
+
+class Plan(unittest.TestCase):
+    """coupler/cosph starts the program cosph-case plans. A case that names
+    the solid in solid.executable must get exactly this solid, whatever its
+    solid.model: no edit of cosph is needed to run it."""
+
+    def test_the_launcher_plans_this_solid_for_a_case_naming_it(self):
+        folder = tempfile.mkdtemp(prefix="cosph_conf_plan_")
+        try:
+            path = os.path.join(folder, "case.pbtxt")
+            with open(path, "w") as f:
+                f.write(case_text((0, 0, 0.02, 0.02)).replace(
+                    "fluid { spacing: %r }\n" % DX, ""))   # the solid alone
+            code, programs, err = planned_programs(path)
+            self.assertEqual(code, 0, err)
+            self.assertEqual(programs, [SOLID], "cosph-case plan would start another program")
+            print(f"\n  cosph-case plan: {programs[0]}", file=sys.stderr)
+        finally:
+            shutil.rmtree(folder, ignore_errors=True)
+
 
 class BadInput(unittest.TestCase):
     def setUp(self):
@@ -503,7 +537,7 @@ def main():
     parser.add_argument("--solid", required=True, help="the solid executable under test")
     parser.add_argument("--model", help="solid.model to write into the cases "
                                         "(default: from the executable's name, else left out)")
-    parser.add_argument("--bin", help="folder with cosph-coupler and cosph-dummy "
+    parser.add_argument("--bin", help="folder with cosph-case, cosph-coupler and cosph-dummy "
                                       "(default: the solid's folder, else build/bin)")
     args, rest = parser.parse_known_args()
     SOLID = os.path.abspath(args.solid)
@@ -514,11 +548,12 @@ def main():
                                               os.path.join(REPO, "build", "bin")]
     for folder in candidates:
         if all(os.access(os.path.join(folder, exe), os.X_OK)
-               for exe in ("cosph-coupler", "cosph-dummy")):
+               for exe in ("cosph-case", "cosph-coupler", "cosph-dummy")):
             BIN = os.path.abspath(folder)
             break
     else:
-        parser.error(f"no cosph-coupler and cosph-dummy in {', '.join(candidates)} (give --bin)")
+        parser.error(f"no cosph-case, cosph-coupler and cosph-dummy in {', '.join(candidates)} "
+                     f"(give --bin)")
     print(f"solid under test: {SOLID} (solid.model: {MODEL or 'not set'}), coupler and dummy "
           f"from {BIN}", file=sys.stderr)
     unittest.main(argv=[sys.argv[0]] + rest)

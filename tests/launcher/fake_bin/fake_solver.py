@@ -35,7 +35,7 @@ def _write(path, text):
 
 
 def main(name):
-    tag = name[len("cosph-"):]
+    tag = name[len("cosph-"):] if name.startswith("cosph-") else name
     state = os.environ.get("FAKE_DIR")
     args = sys.argv[1:]
     out = args[args.index("--out") + 1] if "--out" in args else "."

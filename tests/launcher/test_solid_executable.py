@@ -1,0 +1,146 @@
+"""The launcher starts a solid of the user's own that only the case names
+(solid.executable), through the real cosph-case, and refuses a case whose
+program is missing before anything starts (issue 7).
+
+Run from the repository root:
+    COSPH_TEST_BIN=build/bin /usr/bin/python3 -m unittest discover -s tests/launcher -v
+
+COSPH_TEST_BIN is the folder of the built cosph-case (ctest sets it; default
+build/bin). The coupler and the fluid are the fakes of fake_bin/, copied next
+to a link to the real cosph-case; the third-party solid is a fake too
+(fake_solver.py), named my-solid, in the case's folder or on PATH.
+"""
+import json
+import os
+import shutil
+import subprocess
+import tempfile
+import unittest
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+REPO = HERE.parent.parent
+FAKE_BIN = HERE / "fake_bin"
+REAL_BIN = Path(os.environ.get("COSPH_TEST_BIN", REPO / "build" / "bin"))
+
+MY_SOLID = f"""#!/usr/bin/python3
+# A solid model of someone else's: the fake solver, under another name.
+import sys
+sys.dont_write_bytecode = True
+sys.path.insert(0, {str(FAKE_BIN)!r})
+import fake_solver
+fake_solver.main("my-solid")
+"""
+
+
+def coupled_case(executable, model="my_model"):
+    """cases/elastic_plate.pbtxt with the solid block naming another model and program."""
+    text = (REPO / "cases" / "elastic_plate.pbtxt").read_text()
+    assert 'model: "jaumann"' in text
+    return text.replace('model: "jaumann"',
+                        f'model: "{model}"\n  executable: "{executable}"')
+
+
+class ThirdPartySolid(unittest.TestCase):
+    def setUp(self):
+        case_exe = REAL_BIN / "cosph-case"
+        if not os.access(case_exe, os.X_OK):
+            if os.environ.get("COSPH_TEST_BIN"):
+                self.fail(f"{case_exe} is missing (COSPH_TEST_BIN={REAL_BIN})")
+            self.skipTest(f"no built {case_exe}; set COSPH_TEST_BIN")
+        self.tmp = Path(tempfile.mkdtemp(prefix="cosph-3rd-"))
+        self.bin = self.tmp / "bin"
+        shutil.copytree(FAKE_BIN, self.bin)
+        (self.bin / "cosph-case").unlink()
+        (self.bin / "cosph-case").symlink_to(case_exe.resolve())
+        (self.bin / "cosph-solid").unlink()   # the built-in solid must not be what runs
+        self.cases = self.tmp / "my_cases"
+        self.cases.mkdir()
+        self.state = self.tmp / "state"
+        self.state.mkdir()
+        self.out = self.tmp / "out"
+        self.env = {k: v for k, v in os.environ.items() if not k.startswith(("COSPH_", "FAKE_"))}
+        self.env.update(COSPH_BIN=str(self.bin), FAKE_DIR=str(self.state), FAKE_STEPS="3")
+
+    def tearDown(self):
+        shutil.rmtree(self.tmp, ignore_errors=True)
+
+    def install(self, folder, name="my-solid", executable=True):
+        folder.mkdir(parents=True, exist_ok=True)
+        program = folder / name
+        program.write_text(MY_SOLID)
+        program.chmod(0o755 if executable else 0o644)
+        return program
+
+    def launch(self, case_text, **env):
+        case = self.cases / "plate.pbtxt"
+        case.write_text(case_text)
+        proc = subprocess.run([str(REPO / "coupler" / "cosph"), "run", str(case),
+                               "--out", str(self.out), "--quiet"],
+                              env={**self.env, **env}, stdin=subprocess.DEVNULL,
+                              capture_output=True, text=True, timeout=60)
+        return case, proc
+
+    def started(self):
+        return sorted(p.name[:-len(".pid")] for p in self.state.glob("*.pid"))
+
+    def test_solid_named_only_in_the_case_is_started(self):
+        program = self.install(self.cases)
+        case, proc = self.launch(coupled_case("my-solid"))
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertEqual(self.started(), ["cosph-coupler", "cosph-fluid", "my-solid"])
+        args = json.loads((self.state / "my-solid.args").read_text())
+        self.assertEqual(args[:4], ["--case", str(case), "--out", str(self.out)])
+        self.assertEqual(args[-2:], ["--endpoint", f"ipc://{self.out}/coupler.sock"])
+        self.assertIn(str(program), (self.out / "command.txt").read_text())
+
+    def test_program_on_path_and_by_relative_path(self):
+        elsewhere = self.tmp / "tools"
+        self.install(elsewhere)
+        _, proc = self.launch(coupled_case("my-solid"),
+                              PATH=f"{elsewhere}:{os.environ.get('PATH', '')}")
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn("my-solid", self.started())
+        for pid in self.state.glob("*.pid"):
+            pid.unlink()
+        # A path with a "/" is taken from the case's folder, not the working directory.
+        self.install(self.cases / "solids")
+        _, proc = self.launch(coupled_case("solids/my-solid"))
+        self.assertEqual(proc.returncode, 0, proc.stderr)
+        self.assertIn("my-solid", self.started())
+
+    def test_missing_program_is_refused_naming_file_field_and_reason(self):
+        case, proc = self.launch(coupled_case("no-such-solid"))
+        self.assertEqual(proc.returncode, 2, proc.stderr)
+        self.assertIn(str(case), proc.stderr)
+        self.assertIn("solid.executable", proc.stderr)
+        self.assertIn("no executable program 'no-such-solid'", proc.stderr)
+        self.assertEqual(self.started(), [])   # nothing was started
+        case, proc = self.launch(coupled_case("./gone/my-solid"))
+        self.assertEqual(proc.returncode, 2, proc.stderr)
+        self.assertIn("does not exist", proc.stderr)
+        self.assertEqual(self.started(), [])
+
+    def test_program_that_is_not_executable_is_refused(self):
+        self.install(self.cases, executable=False)
+        _, proc = self.launch(coupled_case("./my-solid"))
+        self.assertEqual(proc.returncode, 2, proc.stderr)
+        self.assertIn("solid.executable", proc.stderr)
+        self.assertIn("is not executable", proc.stderr)
+        _, proc = self.launch(coupled_case("my-solid"))   # by name: found, but not runnable
+        self.assertEqual(proc.returncode, 2, proc.stderr)
+        self.assertIn("is not executable", proc.stderr)
+        self.assertEqual(self.started(), [])
+
+    def test_unknown_model_without_a_program_is_still_refused(self):
+        text = coupled_case("x").replace('  executable: "x"\n', "")
+        case, proc = self.launch(text)
+        self.assertEqual(proc.returncode, 2, proc.stderr)
+        self.assertIn("solid.model", proc.stderr)
+        self.assertIn("unknown model 'my_model'", proc.stderr)
+        self.assertIn("solid.executable", proc.stderr)   # the hint
+        self.assertEqual(self.started(), [])
+
+
+if __name__ == "__main__":
+    unittest.main()
