@@ -55,39 +55,48 @@ Measurement time_solid(const std::string& case_path, double spacing, int threads
 
 int bench(int argc, char** argv) {
   int steps = 200;
-  bool quick = false;
+  bool quick = false, fluid_only = false;
+  std::vector<double> spacings{0.008, 0.002, 0.0009};  // about 650, 10 000, 50 000 water particles
+  std::vector<int> thread_counts{1, omp_get_num_procs()};
   for (int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
     if (option == "--steps" && i + 1 < argc)
       steps = std::stoi(argv[++i]);
     else if (option == "--quick")
       quick = true;
+    else if (option == "--fluid")
+      fluid_only = true;
+    else if (option == "--spacing" && i + 1 < argc)
+      spacings = {std::stod(argv[++i])};
+    else if (option == "--threads" && i + 1 < argc)
+      thread_counts = {std::stoi(argv[++i])};
     else if (option == "--help" || option == "-h") {
       std::printf(
-          "usage: cosph-bench [--steps N] [--quick]\n\nParticle-steps per second of the fluid "
-          "solver on the dam break at about 650, 10 000 and 50 000 water particles\n(--quick: "
-          "the first two), on one thread and on all cores. Not a test.\n");
+          "usage: cosph-bench [--steps N] [--quick] [--fluid] [--spacing DX] [--threads T]\n\n"
+          "Particle-steps per second of the fluid solver on the dam break at about 650, 10 000\n"
+          "and 50 000 water particles (--quick: the first two; --spacing: that one spacing\n"
+          "instead), and of the solid (--fluid: not), on one thread and on all cores\n"
+          "(--threads: on T only). Not a test.\n");
       return 0;
     } else
-      throw sph::ConfigError("usage: cosph-bench [--steps N] [--quick]");
+      throw sph::ConfigError(
+          "usage: cosph-bench [--steps N] [--quick] [--fluid] [--spacing DX] [--threads T]");
   }
   const std::string case_path = std::string(COSPH_SOURCE_DIR) + "/cases/dam_break.pbtxt";
-  // Spacings giving about 650, 10 000 and 50 000 water particles.
-  std::vector<double> spacings{0.008, 0.002, 0.0009};
-  if (quick) spacings.pop_back();
-  const int all_threads = omp_get_num_procs();
+  if (quick && spacings.size() > 1) spacings.pop_back();
   std::printf("%-6s %10s %8s %14s %22s\n", "solver", "particles", "threads", "ms/step",
               "particle-steps/s");
   for (double spacing : spacings)
-    for (int threads : {1, all_threads}) {
+    for (int threads : thread_counts) {
       const Measurement m = time_fluid(case_path, spacing, threads, steps);
       std::printf("%-6s %10ld %8d %14.4f %22.4g\n", "fluid", m.particles, m.threads,
                   1e3 * m.seconds_per_step, static_cast<double>(m.particles) / m.seconds_per_step);
       std::fflush(stdout);
     }
+  if (fluid_only) return 0;
   const std::string plate = std::string(COSPH_SOURCE_DIR) + "/cases/oscillating_plate.pbtxt";
   for (double spacing : {0.002, 0.001})
-    for (int threads : {1, all_threads}) {
+    for (int threads : thread_counts) {
       const Measurement m = time_solid(plate, spacing, threads, steps);
       std::printf("%-6s %10ld %8d %14.4f %22.4g\n", "solid", m.particles, m.threads,
                   1e3 * m.seconds_per_step, static_cast<double>(m.particles) / m.seconds_per_step);
