@@ -27,13 +27,15 @@ Vec2 mean_displacement(const std::vector<int>& id, const std::vector<Vec2>& x,
   return tip_ids.empty() ? sum : Vec2(sum / static_cast<double>(tip_ids.size()));
 }
 
-Vec2 broken_part_centre(const SolidParticles& P, double below_y) {
+Vec2 broken_part_centre(const std::vector<Vec2>& x0, const std::vector<Vec2>& x,
+                        const std::vector<double>& m, const std::vector<std::uint8_t>& clamped,
+                        double below_y) {
   Vec2 moment = Vec2::Zero();
   double mass = 0.0;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    if (P.clamped[i] || P.x0[i].y() >= below_y) continue;
-    moment += P.m[i] * P.x[i];
-    mass += P.m[i];
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (clamped[i] || x0[i].y() >= below_y) continue;
+    moment += m[i] * x[i];
+    mass += m[i];
   }
   return mass > 0.0 ? Vec2(moment / mass) : Vec2::Zero();
 }

@@ -1,6 +1,8 @@
 // The solid measurements of timeseries.csv.
 #pragma once
 
+#include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "solid_particles.hpp"
@@ -46,7 +48,25 @@ Vec2 mean_displacement(const std::vector<int>& id, const std::vector<Vec2>& x,
 // Centre of mass of the free (not clamped) particles whose initial y lies
 // below `below_y`: in the fracture scene, the part a crack above that height
 // breaks off (before it breaks, the bending plate's lower part). Zero for none.
-Vec2 broken_part_centre(const SolidParticles& particles, double below_y);
+// The array form serves every solid model (x0: initial positions).
+Vec2 broken_part_centre(const std::vector<Vec2>& x0, const std::vector<Vec2>& x,
+                        const std::vector<double>& m, const std::vector<std::uint8_t>& clamped,
+                        double below_y);
+inline Vec2 broken_part_centre(const SolidParticles& particles, double below_y) {
+  return broken_part_centre(particles.x0, particles.x, particles.m, particles.clamped, below_y);
+}
+
+// broken_x, broken_y (m) for timeseries.csv when the case sets
+// solid.broken_part_below_y, else nothing.
+inline std::vector<sph::Gauge> broken_part_gauges(const std::optional<double>& below_y,
+                                                  const std::vector<Vec2>& x0,
+                                                  const std::vector<Vec2>& x,
+                                                  const std::vector<double>& m,
+                                                  const std::vector<std::uint8_t>& clamped) {
+  if (!below_y) return {};
+  const Vec2 centre = broken_part_centre(x0, x, m, clamped, *below_y);
+  return {{"broken_x", "m", centre.x()}, {"broken_y", "m", centre.y()}};
+}
 
 SolidGauges measure(const SolidParticles& particles, const std::vector<int>& tip_ids);
 

@@ -14,13 +14,16 @@
 // free surfaces, where F of a quadratic field is only first-order accurate,
 // it stiffens bending a little.
 //
-// alpha is solid.hourglass_control, default 10. Without it the oscillating
-// plate is too soft (its period +16 / +6.7 / +3.4 % at 6 / 10 / 16 particles
-// across, converging towards theory): bending mixes with the patterns F
-// cannot see. The period falls as alpha grows (15 gave -1.8 % at 6 across, 50
-// made the plate 10 % too stiff at 10 across); 10 was chosen on this same
-// plate, so the plate does not validate it independently
-// (docs/results/oscillating_plate_tl.md shows alpha = 0, 10 and 15).
+// alpha is solid.hourglass_control, default 5 (kDefaultHourglassControl in
+// solid_parameters.hpp): the value of the author's own implementation, LAMMPS
+// smd/tlsph, whose examples all use hg = 10 with a force half as large per unit
+// coefficient (delta = 0.5 gamma . n there), i.e. alpha = 5 in the form above.
+// The kernels differ (LAMMPS: spiky kernel, support 2.01 dx; here the cubic
+// spline, support 2.6 dx), so the match is of the coefficient, not of every
+// pair force. 0 turns the control off. Without it the oscillating plate is too
+// soft (its period +16 / +6.7 / +3.3 % at 6 / 10 / 16 particles across,
+// converging towards theory): bending mixes with the patterns F cannot see;
+// the period falls as alpha grows (docs/results/oscillating_plate_tl.md).
 #pragma once
 
 #include <cmath>

@@ -7,6 +7,7 @@
 #include "reference_configuration.hpp"
 #include "sphcore/pair_terms.hpp"
 #include "sphcore/runaway_error.hpp"
+#include "wall_contact.hpp"
 
 namespace cosph::solid::tl {
 
@@ -55,6 +56,8 @@ void TLSolver::begin_step(double dt) {
     if (P.clamped[i]) continue;
     P.v[i] += half * (P.a[i] + P.external_a[i]);
     P.x[i] += dt * P.v[i];
+    // solid.walls: the same kinematic contact as the Jaumann solid's.
+    for (const sph::Region& wall : parameters_.walls) push_out_of_wall(wall, P.x[i], P.v[i]);
   }
   update();
   check_state();  // before the state is shown to anyone, the coupler included
@@ -110,7 +113,12 @@ SolidGauges TLSolver::gauges() const {
 }
 
 std::vector<sph::Gauge> TLSolver::gauge_values() const {
-  return named_gauges(gauges());
+  std::vector<sph::Gauge> values = named_gauges(gauges());
+  const TLParticles& P = particles_;
+  for (const sph::Gauge& gauge :
+       broken_part_gauges(parameters_.broken_part_below_y, P.X, P.x, P.m, P.clamped))
+    values.push_back(gauge);
+  return values;
 }
 
 void TLSolver::check_state() const {
