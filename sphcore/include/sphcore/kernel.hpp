@@ -47,11 +47,14 @@ class GradientFactor {
 
   // Zero at r = 0: two particles squeezed onto one point (water pairing near
   // the tip of the elastic plate did that) have no direction between them.
+  // Both branches are computed and one selected, so that a loop over pairs
+  // vectorises instead of mispredicting s < 1 on every other pair.
   double operator()(double r) const {
     const double s = r * inverse_h_;
-    if (s >= 2.0 || r <= 0.0) return 0.0;
-    const double df = s < 1.0 ? -3.0 * s + 2.25 * s * s : -0.75 * (2.0 - s) * (2.0 - s);
-    return scale_ * df / r;
+    const double inner = -3.0 * s + 2.25 * s * s;
+    const double outer = -0.75 * (2.0 - s) * (2.0 - s);
+    const double F = scale_ * (s < 1.0 ? inner : outer) / r;
+    return s >= 2.0 || r <= 0.0 ? 0.0 : F;
   }
 
  private:

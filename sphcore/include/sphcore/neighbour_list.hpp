@@ -10,6 +10,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <cmath>
 #include <span>
 #include <vector>
@@ -34,29 +35,15 @@ class NeighbourList {
 #pragma omp parallel
     {
       Store& store = stores_[static_cast<std::size_t>(omp_get_thread_num())];
-      store.j.clear();
-      store.F.clear();
       // About 21 neighbours at h = 1.3 dx: room for 32 avoids regrowth.
-      const std::size_t owned = x.size() / stores_.size() + 1;
-      store.j.reserve(32 * owned);
-      store.F.reserve(32 * owned);
+      store.reserve(32 * (x.size() / stores_.size() + 1));
+      store.size = 0;
 #pragma omp for schedule(static)
       for (long i = 0; i < n; ++i) {
-        const std::size_t begin = store.j.size();
-        if (wanted(i)) {
-          const Vec2 x_i = x[i];
-          grid.for_each_candidate_range(x_i, [&](int range_begin, int range_end) {
-            for (int j = range_begin; j < range_end; ++j) {
-              const double r2 = (x_i - x[j]).squaredNorm();
-              if (r2 >= support2 || j == i) continue;
-              const double r = std::sqrt(r2);
-              store.j.push_back(j);
-              store.F.push_back(gradient_factor(r));
-            }
-          });
-        }
+        const std::size_t begin = store.size;
+        if (wanted(i)) list_neighbours(grid, x, i, support2, gradient_factor, store);
         first_[i] = begin;
-        count_[i] = static_cast<int>(store.j.size() - begin);
+        count_[i] = static_cast<int>(store.size - begin);
         owner_[i] = omp_get_thread_num();
       }
     }
@@ -71,10 +58,45 @@ class NeighbourList {
   }
 
  private:
+  // One thread's pairs: the first `size` entries of j and F are in use.
   struct Store {
     std::vector<int> j;
     std::vector<double> F;
+    std::size_t size = 0;
+
+    void reserve(std::size_t entries) {
+      if (entries <= j.size()) return;
+      const std::size_t grown = std::max(entries, 2 * j.size());
+      j.resize(grown);
+      F.resize(grown);
+    }
   };
+  // Appends the neighbours of i to the store. Every candidate is written, and
+  // the end moves past it only if it is a neighbour: no branch to mispredict on
+  // half the candidates. F holds r^2 until the second loop, which vectorises.
+  static void list_neighbours(const CellGrid& grid, std::span<const Vec2> x, long i,
+                              double support2, kernel::GradientFactor gradient_factor,
+                              Store& store) {
+    std::size_t candidates = 0;
+    grid.for_each_candidate_range(x[i], [&](int begin, int end) { candidates += end - begin; });
+    const std::size_t begin = store.size;
+    store.reserve(begin + candidates);
+    int* const j_out = store.j.data();
+    double* const F_out = store.F.data();
+    const Vec2 x_i = x[i];
+    std::size_t end = begin;
+    grid.for_each_candidate_range(x_i, [&, support2](int range_begin, int range_end) {
+      for (int j = range_begin; j < range_end; ++j) {
+        const double r2 = (x_i - x[j]).squaredNorm();
+        j_out[end] = j;
+        F_out[end] = r2;
+        end += static_cast<std::size_t>((r2 < support2) & (j != i));
+      }
+    });
+    for (std::size_t k = begin; k < end; ++k) F_out[k] = gradient_factor(std::sqrt(F_out[k]));
+    store.size = end;
+  }
+
   std::vector<Store> stores_;
   std::vector<std::size_t> first_;
   std::vector<int> count_;
