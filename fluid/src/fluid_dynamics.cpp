@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "continuity.hpp"
+#include "momentum.hpp"
 #include "sphcore/kernel.hpp"
 #include "sphcore/pair_terms.hpp"
 #include "sphcore/renormalisation.hpp"
@@ -105,24 +106,30 @@ void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid, const F
 void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
                            const FluidParameters& par) {
   const long n = static_cast<long>(P.size());
+  P.sigma.resize(P.size());
+  P.inverse_rho.resize(P.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) {
+    P.sigma[i] = total_stress(P.p[i], P.tau[i]);
+    P.inverse_rho[i] = 1.0 / P.rho[i];
+  }
 
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
     if (!P.is_water(i)) continue;
     const Vec2 x_i = P.x[i], v_i = P.v[i];
-    const double rho_i = P.rho[i];
-    const Mat2 sigma_i = -P.p[i] * Mat2::Identity() + P.tau[i];
+    const double rho_i = P.rho[i], inverse_rho_i = P.inverse_rho[i];
+    const SymmetricStress sigma_i = P.sigma[i];
     Vec2 a_i = par.run.gravity;
     const auto neighbours = pairs.neighbours(i);
     const auto F = pairs.gradient_factors(i);
     for (std::size_t k = 0; k < neighbours.size(); ++k) {
       const int j = neighbours[k];
       const Vec2 x_ij = x_i - P.x[j];
-      const double rho_j = P.rho[j];
-      const Mat2 sigma_j = -P.p[j] * Mat2::Identity() + P.tau[j];
       const double Pi_ij = sph::artificial_viscosity(x_ij, v_i - P.v[j], par.h, par.c0,
-                                                     0.5 * (rho_i + rho_j), par.A, par.B);
-      a_i += sph::momentum_pair(P.m[j], sigma_i, sigma_j, rho_i, rho_j, Pi_ij, F[k] * x_ij);
+                                                     0.5 * (rho_i + P.rho[j]), par.A, par.B);
+      a_i += momentum_pair(P.m[j], sigma_i, P.sigma[j], inverse_rho_i, P.inverse_rho[j], Pi_ij,
+                           F[k] * x_ij);
     }
     P.a[i] = a_i;
   }

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "momentum.hpp"
 #include "sphcore/types.hpp"
 
 namespace cosph::fluid {
@@ -26,14 +27,16 @@ struct FluidParticles {
   std::vector<Vec2> grad_rho;
 
   // Derived each step from the state.
-  std::vector<double> p;              // pressure (walls: extrapolated from the water)
-  std::vector<Mat2> tau;              // viscous stress
-  std::vector<Vec2> grad_rho_next;    // being computed
-  std::vector<double> volume;         // m / rho, once per particle rather than per pair
-  std::vector<Vec2> a;                // dv/dt
-  std::vector<double> drho;           // drho/dt
-  std::vector<Vec2> external_a;       // acceleration from outside the fluid (coupling)
-  std::vector<double> external_drho;  // density rate from outside (a moving solid wall)
+  std::vector<double> p;               // pressure (walls: extrapolated from the water)
+  std::vector<Mat2> tau;               // viscous stress
+  std::vector<SymmetricStress> sigma;  // total stress -p I + tau, for the momentum pass
+  std::vector<double> inverse_rho;     // 1 / rho, once per particle rather than per pair
+  std::vector<Vec2> grad_rho_next;     // being computed
+  std::vector<double> volume;          // m / rho, once per particle rather than per pair
+  std::vector<Vec2> a;                 // dv/dt
+  std::vector<double> drho;            // drho/dt
+  std::vector<Vec2> external_a;        // acceleration from outside the fluid (coupling)
+  std::vector<double> external_drho;   // density rate from outside (a moving solid wall)
 
   std::size_t size() const { return x.size(); }
   bool is_water(std::size_t i) const { return kind[i] == Kind::water; }

@@ -1,0 +1,42 @@
+// Momentum equation of the water (SPEC.md "Fluid" and "Momentum: the coupling
+// rule"):
+//   dv_i/dt = g + sum_j m_j ( (sigma_i + sigma_j) / (rho_i rho_j) - Pi_ij I ) . grad_i W_ij,
+//   sigma = -p I + tau.
+// sph::momentum_pair is this pair term for any two particles. The water's own
+// pairs, the bulk of the work, use the same formula in a form that costs less
+// per pair: the total stress is symmetric (tau is) and kept by its three
+// components, and 1/rho is worked out once per particle, so a pair builds no
+// 2x2 matrix and divides nothing. The bracket is still symmetric in i and j
+// bit for bit, so equal masses still exchange exactly opposite forces.
+#pragma once
+
+#include "sphcore/types.hpp"
+
+namespace cosph::fluid {
+
+using sph::Mat2;
+using sph::Vec2;
+
+// A symmetric 2-D stress.
+struct SymmetricStress {
+  double xx, xy, yy;
+};
+
+// sigma = -p I + tau; tau is symmetric by construction (viscous_stress.hpp).
+inline SymmetricStress total_stress(double p, const Mat2& tau) {
+  return {-p + tau(0, 0), tau(0, 1), -p + tau(1, 1)};
+}
+
+// Contribution of j to dv_i/dt.
+inline Vec2 momentum_pair(double m_j, const SymmetricStress& sigma_i,
+                          const SymmetricStress& sigma_j, double inverse_rho_i,
+                          double inverse_rho_j, double Pi_ij, const Vec2& grad_W_ij) {
+  const double inverse_rho_i_rho_j = inverse_rho_i * inverse_rho_j;
+  const double b_xx = (sigma_i.xx + sigma_j.xx) * inverse_rho_i_rho_j - Pi_ij;
+  const double b_xy = (sigma_i.xy + sigma_j.xy) * inverse_rho_i_rho_j;
+  const double b_yy = (sigma_i.yy + sigma_j.yy) * inverse_rho_i_rho_j - Pi_ij;
+  return m_j * Vec2(b_xx * grad_W_ij.x() + b_xy * grad_W_ij.y(),
+                    b_xy * grad_W_ij.x() + b_yy * grad_W_ij.y());
+}
+
+}  // namespace cosph::fluid
