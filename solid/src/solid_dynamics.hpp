@@ -1,7 +1,9 @@
 // The neighbour passes of one solid step (SPEC.md "Solid", "Momentum").
 //
 // 1. rates: drho/dt from continuity, and ds/dt from the Jaumann rate of the
-//    renormalised velocity gradient.
+//    velocity gradient: renormalised (SPEC.md, solid.velocity_gradient
+//    "linear"), or fitted to be exact for quadratic fields ("quadratic", the
+//    default; sphcore/quadratic_gradient.hpp).
 // 2. accelerations: dv/dt from the momentum equation with artificial
 //    viscosity and (if on) artificial stress, the one force evaluation.
 // Between them the solver turns rho and s into the stress (update_stress).

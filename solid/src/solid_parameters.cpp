@@ -99,6 +99,14 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
   p.A = solid.artificial_viscosity() > 0.0 ? solid.artificial_viscosity() : 1.0;
   p.B = solid.artificial_viscosity_quadratic() > 0.0 ? solid.artificial_viscosity_quadratic() : 1.0;
 
+  const std::string& gradient = solid.velocity_gradient();
+  require(gradient.empty() || gradient == "quadratic" || gradient == "linear", case_file,
+          "solid.velocity_gradient", "unknown '" + gradient + "' (known: quadratic, linear)");
+  require(gradient.empty() || p.model == SolidModel::jaumann, case_file, "solid.velocity_gradient",
+          "applies to solid.model 'jaumann' only");
+  p.velocity_gradient =
+      gradient == "linear" ? VelocityGradient::linear : VelocityGradient::quadratic;
+
   require(solid.body_size() > 0, case_file, "solid.body", "no solid region given");
   for (int k = 0; k < solid.body_size(); ++k)
     check_box(case_file, "solid.body[" + std::to_string(k) + "]", solid.body(k), p.dx);

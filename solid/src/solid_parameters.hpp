@@ -51,6 +51,12 @@ enum class SolidModel {
   total_lagrangian,  // cosph-solid-tl: total-Lagrangian SPH, St Venant-Kirchhoff
 };
 
+// How the Jaumann solid takes its velocity gradient (solid.velocity_gradient).
+enum class VelocityGradient {
+  quadratic,  // least-squares fit exact for quadratic fields (sphcore/quadratic_gradient.hpp)
+  linear,     // renormalised kernel gradient (SPEC.md), exact for linear fields
+};
+
 struct SolidParameters {
   SolidModel model;
   sph::RunParameters run;
@@ -61,6 +67,7 @@ struct SolidParameters {
   double K, G;   // bulk and shear modulus of the body
   double c0;     // longitudinal sound speed of the body
   double A, B;   // Monaghan artificial viscosity
+  VelocityGradient velocity_gradient;
   ArtificialStressParameters artificial_stress;
   FractureParameters fracture;
   std::optional<BendingModeParameters> bending_mode;

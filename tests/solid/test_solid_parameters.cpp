@@ -25,7 +25,8 @@ std::string refusal(const std::vector<std::string>& overrides) {
 
 TEST(SolidParameters, ThePlateCaseIsValid) {
   const SolidParameters p = read_solid_parameters(sph::load_case(plate_case_path()));
-  EXPECT_DOUBLE_EQ(p.dx, 0.002);
+  EXPECT_DOUBLE_EQ(p.dx, 0.00125);
+  EXPECT_EQ(p.velocity_gradient, VelocityGradient::quadratic);
   EXPECT_TRUE(p.artificial_stress.enabled);
   EXPECT_DOUBLE_EQ(p.artificial_stress.epsilon, 0.3);
   ASSERT_TRUE(p.bending_mode.has_value());
@@ -58,6 +59,13 @@ TEST(SolidParameters, OtherBadFieldsAreNamed) {
   EXPECT_NE(refusal({"solid.fracture.enabled=true"}).find("solid.fracture.yield_stress"),
             std::string::npos);
   EXPECT_NE(refusal({"solid.initial_velocity.tip_speed=100"}).find("tip_speed"), std::string::npos);
+  const std::string message = refusal({"solid.velocity_gradient=cubic"});
+  EXPECT_NE(message.find("solid.velocity_gradient"), std::string::npos) << message;
+  EXPECT_NE(message.find("quadratic, linear"), std::string::npos) << message;
+  EXPECT_NE(refusal({"solid.model=total_lagrangian", "solid.velocity_gradient=linear",
+                     "solid.artificial_stress.enabled=false"})
+                .find("'jaumann' only"),
+            std::string::npos);
 }
 
 int run_solid(const std::string& arguments) {

@@ -23,10 +23,12 @@ namespace {
 
 using testing::plate_case_path;
 
-// The coarse plate's period is 16 % longer than thin-plate theory (measured;
-// the error falls with resolution, see docs/results/oscillating_plate.md):
-// the test guards against regressions beyond that, not the 3 % target.
-constexpr double kCoarsePeriodTolerance = 0.2;
+// The coarse plate (6 particles across) swings 9 % slower than thin-plate
+// theory (measured; the error falls with resolution, see
+// docs/results/oscillating_plate.md). The test guards against regressions
+// beyond that, not the 3 % target: the linear-exact velocity gradient gives
+// +15 % here, and fails it.
+constexpr double kCoarsePeriodTolerance = 0.12;
 
 // CFL 1 and a tip speed near the sound speed: the plate tears within 0.01 s.
 const char* kRunawayOverrides =
