@@ -7,6 +7,7 @@
 #include "momentum.hpp"
 #include "sphcore/kernel.hpp"
 #include "sphcore/pair_terms.hpp"
+#include "sphcore/parallel.hpp"
 #include "sphcore/renormalisation.hpp"
 #include "sphcore/wall_pressure.hpp"
 #include "viscous_stress.hpp"
@@ -28,10 +29,10 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
   const double diffusion = par.delta * par.h * par.c0;
   P.grad_rho_next.resize(P.size());
   P.volume.resize(P.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
   for (long i = 0; i < n; ++i) P.volume[i] = P.m[i] / P.rho[i];
 
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
   for (long i = 0; i < n; ++i) {
     if (!P.is_water(i)) continue;
     const Vec2 x_i = P.x[i], v_i = P.v[i], grad_rho_i = P.grad_rho[i];
@@ -79,7 +80,7 @@ void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid, const F
                            const TaitEquationOfState& eos) {
   const long n = static_cast<long>(P.size());
   const double h = par.h, support2 = support_squared(par);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
   for (long w = 0; w < n; ++w) {
     if (P.is_water(w)) continue;
     const Vec2 x_w = P.x[w];
@@ -105,13 +106,13 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
   const long n = static_cast<long>(P.size());
   P.sigma.resize(P.size());
   P.inverse_rho.resize(P.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
   for (long i = 0; i < n; ++i) {
     P.sigma[i] = total_stress(P.p[i], P.tau[i]);
     P.inverse_rho[i] = 1.0 / P.rho[i];
   }
 
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
   for (long i = 0; i < n; ++i) {
     if (!P.is_water(i)) continue;
     const Vec2 x_i = P.x[i], v_i = P.v[i];

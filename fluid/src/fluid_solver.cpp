@@ -7,6 +7,7 @@
 #include "fluid_dynamics.hpp"
 #include "fluid_scene.hpp"
 #include "sphcore/kernel.hpp"
+#include "sphcore/parallel.hpp"
 #include "sphcore/permutation.hpp"
 #include "sphcore/runaway_error.hpp"
 
@@ -31,7 +32,7 @@ void FluidSolver::sort_and_find_neighbours() {
 void FluidSolver::update_pressure_and_accelerations() {
   FluidParticles& P = particles_;
   const long n = static_cast<long>(P.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
   for (long i = 0; i < n; ++i)
     if (P.is_water(i)) P.p[i] = eos_.pressure(P.rho[i]);
   compute_wall_pressure(P, grid_, parameters_, eos_);
@@ -40,8 +41,12 @@ void FluidSolver::update_pressure_and_accelerations() {
 
 sph::StepLimits FluidSolver::step_limits() const {
   const FluidParticles& P = particles_;
+  const long n = static_cast<long>(P.size());
   double v_max2 = 0.0, a_max2 = 0.0;
-  for (std::size_t i = 0; i < P.size(); ++i) {
+#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size())) \
+    reduction(max                                                           \
+              : v_max2, a_max2)
+  for (long i = 0; i < n; ++i) {
     if (!P.is_water(i)) continue;
     v_max2 = std::max(v_max2, P.v[i].squaredNorm());
     a_max2 = std::max(a_max2, P.a[i].squaredNorm());
@@ -54,7 +59,7 @@ void FluidSolver::begin_step(double dt) {
   FluidParticles& P = particles_;
   const long n = static_cast<long>(P.size());
   const double half = 0.5 * dt;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
   for (long i = 0; i < n; ++i) {
     if (!P.is_water(i)) continue;
     P.v[i] += half * (P.a[i] + P.external_a[i]);
@@ -62,7 +67,7 @@ void FluidSolver::begin_step(double dt) {
   }
   sort_and_find_neighbours();
   compute_continuity_and_gradients(P, pairs_, parameters_);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
   for (long i = 0; i < n; ++i)
     if (P.is_water(i)) P.rho[i] += dt * P.drho[i];
   update_pressure_and_accelerations();
@@ -73,7 +78,7 @@ void FluidSolver::end_step(double dt) {
   FluidParticles& P = particles_;
   const long n = static_cast<long>(P.size());
   const double half = 0.5 * dt;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
   for (long i = 0; i < n; ++i)
     if (P.is_water(i)) {
       P.v[i] += half * (P.a[i] + P.external_a[i]);
@@ -122,26 +127,35 @@ std::vector<sph::Gauge> FluidSolver::gauge_values() const {
           {"water_particles", "1", static_cast<double>(g.water_particles)}};
 }
 
+const char* FluidSolver::runaway_reason(std::size_t i) const {
+  const FluidParticles& P = particles_;
+  if (!P.is_water(i)) return nullptr;
+  if (!P.x[i].allFinite() || !P.v[i].allFinite() || !std::isfinite(P.rho[i]))
+    return "its state is not finite";
+  if (P.v[i].norm() > parameters_.c0)
+    return "it moves faster than the sound speed c0 (weak compressibility is lost)";
+  if (P.rho[i] < 0.5 * parameters_.rho0 || P.rho[i] > 2.0 * parameters_.rho0)
+    return "its density left [0.5, 2] rho0";
+  return nullptr;
+}
+
 void FluidSolver::check_state() const {
   const FluidParticles& P = particles_;
-  const double rho0 = parameters_.rho0, c0 = parameters_.c0;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    if (!P.is_water(i)) continue;
-    const char* reason = nullptr;
-    if (!P.x[i].allFinite() || !P.v[i].allFinite() || !std::isfinite(P.rho[i]))
-      reason = "its state is not finite";
-    else if (P.v[i].norm() > c0)
-      reason = "it moves faster than the sound speed c0 (weak compressibility is lost)";
-    else if (P.rho[i] < 0.5 * rho0 || P.rho[i] > 2.0 * rho0)
-      reason = "its density left [0.5, 2] rho0";
-    if (reason == nullptr) continue;
-    std::ostringstream message;
-    message << "water particle " << P.id[i] << " at (" << P.x[i].x() << ", " << P.x[i].y()
-            << ") m, t = " << time_ << " s, step " << steps_ << ": " << reason << " (speed "
-            << P.v[i].norm() << " m/s, density " << P.rho[i]
-            << " kg/m^3); the run has blown up: try a smaller run.cfl";
-    throw sph::RunawayError(message.str());
-  }
+  // The first particle in index order that went wrong, as a serial scan finds.
+  const long n = static_cast<long>(P.size());
+  long first = n;
+#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size())) \
+    reduction(min : first)
+  for (long i = 0; i < n; ++i)
+    if (runaway_reason(static_cast<std::size_t>(i)) != nullptr) first = std::min(first, i);
+  if (first == n) return;
+  const std::size_t i = static_cast<std::size_t>(first);
+  std::ostringstream message;
+  message << "water particle " << P.id[i] << " at (" << P.x[i].x() << ", " << P.x[i].y()
+          << ") m, t = " << time_ << " s, step " << steps_ << ": " << runaway_reason(i)
+          << " (speed " << P.v[i].norm() << " m/s, density " << P.rho[i]
+          << " kg/m^3); the run has blown up: try a smaller run.cfl";
+  throw sph::RunawayError(message.str());
 }
 
 sph::Snapshot FluidSolver::snapshot() const {

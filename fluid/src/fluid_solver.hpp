@@ -68,6 +68,8 @@ class FluidSolver {
   void sort_and_find_neighbours();
   void update_pressure_and_accelerations();
   void check_state() const;
+  // Why particle i's state is not physical, or nullptr if it is (or is a wall).
+  const char* runaway_reason(std::size_t i) const;
 
   std::vector<long> interface_index_;  // particle indices of the last collect_interface
   FluidParameters parameters_;

@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "sphcore/parallel.hpp"
+
 namespace sph {
 
 void CellGrid::build(std::span<const Vec2> x, double range, int subdivisions) {
@@ -13,16 +15,25 @@ void CellGrid::build(std::span<const Vec2> x, double range, int subdivisions) {
   const double cell_size = range / static_cast<double>(reach_);
   cell_size_ = cell_size;
   inverse_cell_size_ = 1.0 / cell_size;
+  const bool parallel = worth_threads(n);
+  const long count = static_cast<long>(n);
   Vec2 lo = Vec2::Constant(0.0), hi = Vec2::Constant(0.0);
   if (n > 0) {
-    lo = hi = x[0];
-    for (const Vec2& p : x) {
+    double lo_x = x[0].x(), lo_y = x[0].y(), hi_x = lo_x, hi_y = lo_y;
+    bool finite = true;
+#pragma omp parallel for schedule(static) if (parallel) reduction(min : lo_x, lo_y) \
+    reduction(max : hi_x, hi_y) reduction(&& : finite)
+    for (long i = 0; i < count; ++i) {
       // Checked per particle: min and max pass a NaN by (NaN < a is false).
-      if (!p.allFinite())
-        throw std::runtime_error("neighbour search: a particle position is not finite");
-      lo = lo.cwiseMin(p);
-      hi = hi.cwiseMax(p);
+      finite = finite && x[i].allFinite();
+      lo_x = std::min(lo_x, x[i].x());
+      lo_y = std::min(lo_y, x[i].y());
+      hi_x = std::max(hi_x, x[i].x());
+      hi_y = std::max(hi_y, x[i].y());
     }
+    if (!finite) throw std::runtime_error("neighbour search: a particle position is not finite");
+    lo = Vec2(lo_x, lo_y);
+    hi = Vec2(hi_x, hi_y);
   }
   origin_ = lo;
   nx_ = cell_coordinate(hi.x(), lo.x()) + 1;
@@ -37,16 +48,17 @@ void CellGrid::build(std::span<const Vec2> x, double range, int subdivisions) {
   const std::size_t cell_count = static_cast<std::size_t>(nx_ * ny_);
   cell_begin_.assign(cell_count + 1, 0);
   cell_of_.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
+#pragma omp parallel for schedule(static) if (parallel)
+  for (long i = 0; i < count; ++i) {
     const long cx = std::clamp(cell_coordinate(x[i].x(), lo.x()), 0L, nx_ - 1);
     const long cy = std::clamp(cell_coordinate(x[i].y(), lo.y()), 0L, ny_ - 1);
     cell_of_[i] = cy * nx_ + cx;
-    ++cell_begin_[cell_of_[i] + 1];
   }
+  for (std::size_t i = 0; i < n; ++i) ++cell_begin_[cell_of_[i] + 1];
   for (std::size_t c = 0; c < cell_count; ++c) cell_begin_[c + 1] += cell_begin_[c];
   order_.resize(n);
-  std::vector<int> fill(cell_begin_.begin(), cell_begin_.end() - 1);
-  for (std::size_t i = 0; i < n; ++i) order_[fill[cell_of_[i]]++] = static_cast<int>(i);
+  fill_.assign(cell_begin_.begin(), cell_begin_.end() - 1);
+  for (std::size_t i = 0; i < n; ++i) order_[fill_[cell_of_[i]]++] = static_cast<int>(i);
 }
 
 }  // namespace sph

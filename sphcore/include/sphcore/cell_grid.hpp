@@ -48,7 +48,11 @@ class CellGrid {
 
  private:
   long cell_coordinate(double coordinate, double origin) const {
-    return static_cast<long>(std::floor((coordinate - origin) * inverse_cell_size_));
+    // floor() by truncation: without SSE4.1 std::floor is a call into libm,
+    // and this runs for every particle of every grid build and query.
+    const double cell = (coordinate - origin) * inverse_cell_size_;
+    const long truncated = static_cast<long>(cell);
+    return truncated - static_cast<long>(cell < static_cast<double>(truncated));
   }
 
   double cell_size_ = 0.0, inverse_cell_size_ = 0.0;
@@ -58,6 +62,7 @@ class CellGrid {
   std::vector<int> cell_begin_;  // nx*ny + 1 prefix sums
   std::vector<int> order_;
   std::vector<long> cell_of_;
+  std::vector<int> fill_;  // next free slot per cell while sorting; kept to reuse its memory
 };
 
 }  // namespace sph

@@ -17,6 +17,7 @@
 
 #include "sphcore/cell_grid.hpp"
 #include "sphcore/kernel.hpp"
+#include "sphcore/parallel.hpp"
 
 namespace sph {
 
@@ -32,7 +33,7 @@ class NeighbourList {
     count_.resize(x.size());
     owner_.resize(x.size());
     stores_.resize(static_cast<std::size_t>(omp_get_max_threads()));
-#pragma omp parallel
+#pragma omp parallel if (worth_threads(x.size()))
     {
       Store& store = stores_[static_cast<std::size_t>(omp_get_thread_num())];
       // About 21 neighbours at h = 1.3 dx: room for 32 avoids regrowth.

@@ -1,20 +1,33 @@
 // Reorders struct-of-arrays particle fields into the neighbour grid's order.
 #pragma once
 
-#include <type_traits>
+#include <tuple>
 #include <vector>
+
+#include "sphcore/parallel.hpp"
 
 namespace sph {
 
-// field[k] <- field[order[k]] for every field given.
+// field[k] <- field[order[k]] for every field given, in one pass over order.
+// The sorted copies are written into scratch vectors kept from call to call
+// (one set per list of field types) whose buffers are then swapped with the
+// fields', so that once the sizes have settled a step allocates, zeroes and
+// faults in no memory.
 template <class... Fields>
 void permute(const std::vector<int>& order, Fields&... fields) {
-  auto apply = [&order](auto& field) {
-    std::remove_reference_t<decltype(field)> sorted(field.size());
-    for (std::size_t k = 0; k < order.size(); ++k) sorted[k] = field[order[k]];
-    field.swap(sorted);
-  };
-  (apply(fields), ...);
+  static thread_local std::tuple<Fields...> scratch;
+  std::apply(
+      [&order, &fields...](Fields&... sorted) {
+        (sorted.resize(fields.size()), ...);
+        const long n = static_cast<long>(order.size());
+#pragma omp parallel for schedule(static) if (worth_threads(order.size()))
+        for (long k = 0; k < n; ++k) {
+          const int from = order[k];
+          ((sorted[k] = fields[from]), ...);
+        }
+        (fields.swap(sorted), ...);
+      },
+      scratch);
 }
 
 }  // namespace sph
