@@ -33,7 +33,12 @@ class Session {
  public:
   explicit Session(const CouplerSettings& settings)
       : settings_(settings), timeout_(static_cast<long>(1000.0 * settings.timeout_seconds)) {
-    socket_.set(zmq::sockopt::linger, 0);
+    // The last messages (the stop, or an error) are queued when run() returns:
+    // with no linger, closing the socket dropped whichever the I/O thread had
+    // not sent yet, and on a loaded machine the solid waited for its stop until
+    // it timed out. They get as long as a peer gets to answer, and no longer,
+    // so a peer that is gone cannot hold the coupler's exit.
+    socket_.set(zmq::sockopt::linger, static_cast<int>(timeout_.count()));
     socket_.set(zmq::sockopt::router_mandatory, 1);
     socket_.bind(settings.endpoint);
   }
