@@ -86,13 +86,21 @@ class NeighbourList {
     double* const F_out = store.F.data();
     const Vec2 x_i = x[i];
     std::size_t end = begin;
-    grid.for_each_candidate_range(x_i, [&, support2](int range_begin, int range_end) {
+    auto scan = [&, support2](int range_begin, int range_end) {
       for (int j = range_begin; j < range_end; ++j) {
         const double r2 = (x_i - x[j]).squaredNorm();
         j_out[end] = j;
         F_out[end] = r2;
-        end += static_cast<std::size_t>((r2 < support2) & (j != i));
+        end += static_cast<std::size_t>(r2 < support2);
       }
+    };
+    // i lies in one of the ranges (its own cell's row): that range is scanned
+    // in two parts around it rather than testing j != i for every candidate.
+    const int self = static_cast<int>(i);
+    grid.for_each_candidate_range(x_i, [&](int range_begin, int range_end) {
+      if (self < range_begin || self >= range_end) return scan(range_begin, range_end);
+      scan(range_begin, self);
+      scan(self + 1, range_end);
     });
     for (std::size_t k = begin; k < end; ++k) F_out[k] = gradient_factor(std::sqrt(F_out[k]));
     store.size = end;
