@@ -144,8 +144,7 @@ void FluidSolver::check_state() const {
   // The first particle in index order that went wrong, as a serial scan finds.
   const long n = static_cast<long>(P.size());
   long first = n;
-#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size())) \
-    reduction(min : first)
+#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size())) reduction(min : first)
   for (long i = 0; i < n; ++i)
     if (runaway_reason(static_cast<std::size_t>(i)) != nullptr) first = std::min(first, i);
   if (first == n) return;
