@@ -2,8 +2,8 @@
 //
 // 1. rates: drho/dt from continuity, and ds/dt from the Jaumann rate of the
 //    velocity gradient: renormalised (SPEC.md, solid.velocity_gradient
-//    "linear"), or fitted to be exact for quadratic fields ("quadratic", the
-//    default; sphcore/quadratic_gradient.hpp).
+//    "linear", the default), or fitted to be exact for quadratic fields
+//    ("quadratic", for small deformations; sphcore/quadratic_gradient.hpp).
 // 2. accelerations: dv/dt from the momentum equation with artificial
 //    viscosity and (if on) artificial stress, the one force evaluation.
 // Between them the solver turns rho and s into the stress (update_stress).

@@ -105,7 +105,7 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
   require(gradient.empty() || p.model == SolidModel::jaumann, case_file, "solid.velocity_gradient",
           "applies to solid.model 'jaumann' only");
   p.velocity_gradient =
-      gradient == "linear" ? VelocityGradient::linear : VelocityGradient::quadratic;
+      gradient == "quadratic" ? VelocityGradient::quadratic : VelocityGradient::linear;
 
   require(solid.body_size() > 0, case_file, "solid.body", "no solid region given");
   for (int k = 0; k < solid.body_size(); ++k)

@@ -26,7 +26,10 @@ std::string refusal(const std::vector<std::string>& overrides) {
 TEST(SolidParameters, ThePlateCaseIsValid) {
   const SolidParameters p = read_solid_parameters(sph::load_case(plate_case_path()));
   EXPECT_DOUBLE_EQ(p.dx, 0.00125);
-  EXPECT_EQ(p.velocity_gradient, VelocityGradient::quadratic);
+  EXPECT_EQ(p.velocity_gradient, VelocityGradient::quadratic);  // the case's choice
+  const std::string elastic_plate = std::string(COSPH_SOURCE_DIR) + "/cases/elastic_plate.pbtxt";
+  EXPECT_EQ(read_solid_parameters(sph::load_case(elastic_plate)).velocity_gradient,
+            VelocityGradient::linear);  // the solver's default
   EXPECT_TRUE(p.artificial_stress.enabled);
   EXPECT_DOUBLE_EQ(p.artificial_stress.epsilon, 0.3);
   ASSERT_TRUE(p.bending_mode.has_value());
