@@ -102,8 +102,6 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
   const std::string& gradient = solid.velocity_gradient();
   require(gradient.empty() || gradient == "quadratic" || gradient == "linear", case_file,
           "solid.velocity_gradient", "unknown '" + gradient + "' (known: quadratic, linear)");
-  require(gradient.empty() || p.model == SolidModel::jaumann, case_file, "solid.velocity_gradient",
-          "applies to solid.model 'jaumann' only");
   p.velocity_gradient =
       gradient == "quadratic" ? VelocityGradient::quadratic : VelocityGradient::linear;
 

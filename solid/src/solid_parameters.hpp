@@ -62,14 +62,14 @@ enum class VelocityGradient {
 struct SolidParameters {
   SolidModel model;
   sph::RunParameters run;
-  double dx;     // initial spacing
-  double h;      // smoothing length
-  double rho0;   // reference density
-  double E, nu;  // Young's modulus, Poisson's ratio of the body
-  double K, G;   // bulk and shear modulus of the body
-  double c0;     // longitudinal sound speed of the body
-  double A, B;   // Monaghan artificial viscosity
-  VelocityGradient velocity_gradient;
+  double dx;                           // initial spacing
+  double h;                            // smoothing length
+  double rho0;                         // reference density
+  double E, nu;                        // Young's modulus, Poisson's ratio of the body
+  double K, G;                         // bulk and shear modulus of the body
+  double c0;                           // longitudinal sound speed of the body
+  double A, B;                         // Monaghan artificial viscosity
+  VelocityGradient velocity_gradient;  // jaumann only; the total-Lagrangian solid notes it
   ArtificialStressParameters artificial_stress;
   FractureParameters fracture;
   std::optional<BendingModeParameters> bending_mode;

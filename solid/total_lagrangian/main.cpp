@@ -43,6 +43,11 @@ int run_solid_tl(int argc, char** argv) {
     std::cout << "cosph-solid-tl: note: solid.artificial_stress is not used: the fixed "
                  "reference neighbours of the total-Lagrangian solid have no tensile instability"
               << std::endl;
+  if (!case_file.config.solid().velocity_gradient().empty())
+    std::cout << "cosph-solid-tl: note: solid.velocity_gradient is not used: the "
+                 "total-Lagrangian solid takes its deformation gradient against the initial "
+                 "configuration"
+              << std::endl;
   return cosph::coupling::run_solver(solver, parameters.run, case_file, args, "solid",
                                      cosph::coupling::PhaseKind::solid,
                                      "cosph-solid-tl (total_lagrangian)");
