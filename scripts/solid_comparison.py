@@ -150,10 +150,8 @@ def main():
         "that ran, and the median step it took. The force limit 0.25 sqrt(h/|a|) caps the "
         "step too, so dt can stop growing with the CFL number. The hourglass coefficient of "
         f"the total-Lagrangian solid is its default, alpha = {current_default_alpha()}, in "
-        "the sweeps; the oscillating plate's error row names the alpha it was run with. The "
-        "elastic plate's total-Lagrangian row predates the present default: "
-        "validate_elastic_plate.py ran it with the default of that time, alpha = 10 "
-        "(commit b400a30); it was not rerun (a coupled run of 0.4 s).")
+        "the sweeps and in the elastic plate; the oscillating plate's error row names the "
+        "alpha it was run with.")
     path = cr.write_table("solid_comparison",
                           ["solid", "scene", "error", "wall time (s)",
                            "largest stable step", "sweep"], rows, preamble)
