@@ -83,3 +83,22 @@ def write_points(name, points):
     with open(path, "w") as f:
         json.dump(points, f, indent=1)
     return path
+
+
+def count_pieces(positions, link):
+    """How many separate pieces particles at `positions` (N x 2) form, two
+    particles closer than `link` belonging to the same piece."""
+    x = np.asarray(positions)[:, :2]
+    parent = list(range(len(x)))
+
+    def root(k):
+        while parent[k] != k:
+            parent[k] = parent[parent[k]]
+            k = parent[k]
+        return k
+
+    for i in range(len(x)):
+        near = np.nonzero(((x[i + 1:] - x[i]) ** 2).sum(axis=1) < link * link)[0] + i + 1
+        for j in near:
+            parent[root(j)] = root(i)
+    return len({root(k) for k in range(len(x))})

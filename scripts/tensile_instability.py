@@ -7,7 +7,8 @@ without and with the Gray-Monaghan artificial stress
 (solid.artificial_stress.enabled), and with the quadratic velocity gradient
 (the small-amplitude case's choice) with artificial stress. It draws the
 particles of the runs side by side at a few times from their HDF5 snapshots,
-coloured by the von Mises stress: docs/figures/tensile_instability.png.
+coloured by the von Mises stress: docs/figures/tensile_instability.png, with the outcome of each run in
+docs/results/tensile_instability.md (README marker results:tensile_instability).
 
 A run that blows up is part of the result, not a failure of this script: its
 last good snapshot (solid_last_good.h5) is drawn and the error is reported.
@@ -27,6 +28,8 @@ import time
 import h5py
 import numpy as np
 import matplotlib
+
+import cosph_results as cr
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -157,6 +160,26 @@ def main():
     for label, _, error, wall in runs:
         print(f"{label}: {wall:.0f} s, " + (f"blew up: {error}" if error else "reached the end time"))
     print("wrote", path)
+    write_outcomes(runs, args)
+
+
+def write_outcomes(runs, args):
+    """Each run's end: how far it got, and whether it blew up (its last good state kept)."""
+    rows = []
+    for label, run_out, _, wall in runs:
+        reached = cr.read_csv(str(run_out / "timeseries.csv"))["t"][-1]
+        last = snapshots(run_out)[-1][1]
+        with h5py.File(last) as h5:
+            # Torn: the particles no longer hang together at 1.5 spacings.
+            pieces = cr.count_pieces(h5["position"][:], 1.5 * args.spacing)
+        state = "whole" if pieces == 1 else f"in {pieces} pieces"
+        outcome = (f"blew up; last good state {state}"
+                   if last.endswith("last_good.h5") else f"ran to the end, {state}")
+        rows.append([label, f"{reached:.3f}", outcome, "" if np.isnan(wall) else f"{wall:.0f}"])
+    cr.write_table("tensile_instability", ["run", "reached t (s)", "outcome", "wall time (s)"],
+                   rows, preamble=f"`scripts/tensile_instability.py`: the oscillating plate at tip "
+                                  f"speed {args.tip_speed} m/s, solid.spacing {args.spacing} m, "
+                                  f"to t = {args.end_time} s, the case's CFL number.")
 
 
 if __name__ == "__main__":
