@@ -2,6 +2,7 @@
 // through the same reading and validation as a user's case.
 #pragma once
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -16,6 +17,28 @@ inline std::string write_case(const std::string& name, const std::string& text) 
   const std::string path = temporary_path(name + ".pbtxt");
   std::ofstream(path) << text;
   return path;
+}
+
+// A 0.1 x 0.04 m block 20 mm above a floor (solid.walls), under gravity:
+// it falls and must come to rest on the floor. `extra` goes into the solid
+// block (the model, a gauge).
+inline std::string dropped_block_case(const std::string& name, const std::string& extra = "") {
+  return write_case(name, R"(
+run { gravity { x: 0 y: -9.81 } end_time: 1 }
+solid {
+  spacing: 0.01 density: 1000 youngs_modulus: 1e6 poisson_ratio: 0.3
+  body { min { x: 0 y: 0.02 } max { x: 0.1 y: 0.06 } }
+  walls { min { x: -0.1 y: -0.05 } max { x: 0.2 y: 0 } }
+)" + extra + "\n}\n");
+}
+
+// The lowest particle height; a block resting on the floor y = 0 has its
+// lowest particles half a spacing (5 mm) above it.
+template <class Particles>
+double lowest_y(const Particles& particles) {
+  double lowest = 1.0;
+  for (const auto& x : particles.x) lowest = std::min(lowest, x.y());
+  return lowest;
 }
 
 // The oscillating plate of cases/oscillating_plate.pbtxt.

@@ -194,18 +194,10 @@ TEST(WallContact, ParticleInsideIsPutOnTheNearestFaceAndStopsGoingIn) {
 // A block dropped onto a solid.walls floor comes to rest on it, half a
 // spacing above its face, instead of falling through.
 TEST(WallContact, DroppedBlockRestsOnTheFloor) {
-  const sph::CaseFile case_file = sph::load_case(testing::write_case("dropped", R"(
-run { gravity { x: 0 y: -9.81 } end_time: 1 }
-solid {
-  spacing: 0.01 density: 1000 youngs_modulus: 1e6 poisson_ratio: 0.3
-  body { min { x: 0 y: 0.02 } max { x: 0.1 y: 0.06 } }
-  walls { min { x: -0.1 y: -0.05 } max { x: 0.2 y: 0 } }
-}
-)"));
+  const sph::CaseFile case_file = sph::load_case(testing::dropped_block_case("dropped"));
   SolidSolver solver(case_file, read_solid_parameters(case_file));
   while (solver.time() < 0.2) solver.step(solver.step_limits().smallest());
-  double lowest = 1.0;
-  for (const Vec2& x : solver.particles().x) lowest = std::min(lowest, x.y());
+  const double lowest = testing::lowest_y(solver.particles());
   EXPECT_GE(lowest, 0.005 - 1e-12);  // it fell 20 mm (free fall: 0.2 m in 0.2 s)
   EXPECT_LT(lowest, 0.005 + 0.001);  // and rests on the floor
 }

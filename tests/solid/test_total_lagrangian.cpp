@@ -223,20 +223,11 @@ TEST(CosphSolidTl, RunawayStopsWithLastGoodSnapshot) {
 // on it, half a spacing above its face, instead of falling through; and
 // solid.broken_part_below_y gives it the broken_x, broken_y columns.
 TEST(TotalLagrangianCaseFields, DroppedBlockRestsOnTheFloorAndIsGauged) {
-  const sph::CaseFile case_file = sph::load_case(testing::write_case("tl_dropped", R"(
-run { gravity { x: 0 y: -9.81 } end_time: 1 }
-solid {
-  model: "total_lagrangian"
-  spacing: 0.01 density: 1000 youngs_modulus: 1e6 poisson_ratio: 0.3
-  body { min { x: 0 y: 0.02 } max { x: 0.1 y: 0.06 } }
-  walls { min { x: -0.1 y: -0.05 } max { x: 0.2 y: 0 } }
-  broken_part_below_y: 0.04
-}
-)"));
+  const sph::CaseFile case_file = sph::load_case(testing::dropped_block_case(
+      "tl_dropped", "  model: \"total_lagrangian\"\n  broken_part_below_y: 0.04"));
   TLSolver solver(case_file, read_solid_parameters(case_file));
   while (solver.time() < 0.2) solver.step(solver.step_limits().smallest());
-  double lowest = 1.0;
-  for (const Vec2& x : solver.particles().x) lowest = std::min(lowest, x.y());
+  const double lowest = testing::lowest_y(solver.particles());
   EXPECT_GE(lowest, 0.005 - 1e-12);  // it fell 20 mm (free fall: 0.2 m in 0.2 s)
   EXPECT_LT(lowest, 0.005 + 0.001);  // and rests on the floor
   // The lower two rows (initial y 0.025, 0.035) now sit near y = 0.005, 0.015.
