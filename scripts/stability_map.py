@@ -6,9 +6,8 @@ with an error is a result, not a failure of this script):
   1. run.cfl for the fluid alone (dam break, 8 mm), the solid alone
      (oscillating plate, 6 particles across) and the coupled elastic plate
      (multi-rate, so the sweep stays affordable);
-  2. the coupled plate with synchronised steps at run.cfl = CFL_AT_FLUID_STEP:
-     the common step is then the one the water takes at CFL 0.25, i.e. the
-     solid is stepped at the fluid's step;
+  2. the coupled plate with the solid stepped whole at the fluid's step
+     (coupling.solid_step = fluid), which must stop with an error;
   3. delta-SPH density diffusion off and on: pressure noise in a still tank
      and in the dam break;
   4. the solid-to-fluid density ratio of the coupled plate, down from 1.1.
@@ -20,6 +19,7 @@ usage: /usr/bin/python3 scripts/stability_map.py [--out DIR] [--reuse]
 import argparse
 import glob
 import os
+import re
 import subprocess
 import time
 
@@ -34,9 +34,6 @@ import cosph_results as cr  # noqa: E402
 
 CFLS = [0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0]
 COUPLED_CFLS = [0.25, 0.5, 1.0, 1.5, 2.0]
-# The water's step at CFL 0.25 over the rubber's: (h_f / c_f) / (h_s / c_s),
-# h 2.6 mm and 1.3 mm, c 16.6 m/s and 152.9 m/s (cases/elastic_plate.pbtxt).
-CFL_AT_FLUID_STEP = round(0.25 * (2.6e-3 / 16.57) / (1.3e-3 / 152.89), 2)
 DENSITY_RATIOS = [1.1, 0.5, 0.25, 0.1]
 MULTIRATE = ["coupling.max_substeps=64"]
 
@@ -121,11 +118,17 @@ def cfl_sweeps(out_root):
 
 
 def fluid_step_row(out_root):
-    out = os.path.join(out_root, "coupled_at_fluid_step")
-    reached, dt, error, wall = launch("elastic_plate", out, [f"run.cfl={CFL_AT_FLUID_STEP}"], 0.01)
-    return ["coupled, synchronised, solid's CFL at the fluid's step", f"{CFL_AT_FLUID_STEP:g}",
-            f"{dt:.3g}", "runs" if not error else
-            f"stops at t = {reached:.5f} s: {reason(error)}", f"{wall:.0f}"]
+    """The coupled plate with the solid made to take the water's step whole
+    (coupling.solid_step = fluid): it must stop with an error, not run on."""
+    out = os.path.join(out_root, "coupled_solid_at_fluid_step")
+    reached, dt, error, wall = launch("elastic_plate", out, ["coupling.solid_step=fluid"], 0.01)
+    overstep = re.search(r"up to ([0-9.]+) times its stable step", error)
+    outcome = "runs (not caught)" if not error else (
+        f"stops at t = {reached:.5f} s, steps up to {float(overstep.group(1)):.1f} times the "
+        f"solid's stable one: {reason(error)}" if overstep else
+        f"stops at t = {reached:.5f} s: {reason(error)}")
+    return ["coupled, solid stepped whole at the fluid's step", "0.25", f"{dt:.3g}", outcome,
+            f"{wall:.0f}"]
 
 
 def pressure_noise(snapshot, rho0=1000.0, g=9.81, scale_height=0.288):
@@ -208,13 +211,11 @@ def main():
         "",
         "**Step size.** A sweep stops at its first failure. The force limit "
         "0.25 sqrt(h/|a|) of SPEC.md still applies, so the step taken (median dt) can stop "
-        "growing with the CFL number. The last row is the coupled plate with synchronised "
-        f"steps at run.cfl = {CFL_AT_FLUID_STEP:g}, the solid's CFL number if it took the "
-        "step the water takes at CFL 0.25 (35 microseconds). Its median dt shows what "
-        "happens: the force limit holds the solid's step far below that, so no setting of "
-        "the CFL number steps the solid at the fluid's step; only turning the force limit "
-        "off would, and cosph does not offer that. In multi-rate runs the solid's sub-steps "
-        "obey the same limits.",
+        "growing with the CFL number; in multi-rate runs the solid's sub-steps obey the same "
+        "limits. The last row is the coupled plate with the solid made to take the step the "
+        "water takes at CFL 0.25 whole (`coupling.solid_step: \"fluid\"`, a stability test, "
+        "not a way to run): the solid's own step check stops the run within a few steps, and "
+        "its error says that the steps were longer than its stable one.",
         "",
         table(["scene", "run.cfl", "median dt (s)", "outcome", "wall (s)"], cfl_rows),
         "",

@@ -74,6 +74,11 @@ int run(int argc, char** argv) {
   sph::require(coupling.max_substeps() >= 0, case_file, "coupling.max_substeps",
                "must not be negative");
   settings.max_substeps = std::max(1, coupling.max_substeps());
+  sph::require(coupling.solid_step().empty() || coupling.solid_step() == "own" ||
+                   coupling.solid_step() == "fluid",
+               case_file, "coupling.solid_step",
+               "must be \"own\" (default) or \"fluid\", not \"" + coupling.solid_step() + "\"");
+  settings.solid_at_fluid_step = coupling.solid_step() == "fluid";
   sph::make_output_dir(args.out_dir);
   sph::install_stop_handlers();
   return cosph::coupler::run_coupler(settings);

@@ -185,8 +185,10 @@ class Session {
     const double t = peers_[kFluid].state.time();
     const double end = settings_.run.end_time;
     const bool stop = t >= end - 1e-9 * end;
-    double dt = common_step(peers_[kFluid].state.proposed_dt(), peers_[kSolid].state.proposed_dt(),
-                            settings_.max_substeps);
+    double dt = settings_.solid_at_fluid_step
+                    ? peers_[kFluid].state.proposed_dt()
+                    : common_step(peers_[kFluid].state.proposed_dt(),
+                                  peers_[kSolid].state.proposed_dt(), settings_.max_substeps);
     if (!(dt > 0.0) || !std::isfinite(dt))
       fail("a solver proposed a step that is not positive at t = " + std::to_string(t) + " s");
     dt = std::min(dt, end - t);
@@ -199,6 +201,7 @@ class Session {
       s.set_step(static_cast<std::uint64_t>(step));
       s.set_dt(dt);
       s.set_stop(stop);
+      s.set_whole_step(settings_.solid_at_fluid_step);
       const auto& a = side == kFluid ? forces.fluid_a : forces.solid_a;
       s.mutable_acceleration()->Reserve(2 * static_cast<int>(a.size()));
       for (const sph::Vec2& acceleration : a) {

@@ -16,6 +16,9 @@ struct CouplerSettings {
   sph::RunParameters run;
   CrossPhaseParameters cross_phase;
   int max_substeps = 1;  // 1: synchronised steps; more: multi-rate (common_step.hpp)
+  // coupling.solid_step = "fluid": the fluid's step, taken whole by the solid
+  // too (a stability test that must end in an error).
+  bool solid_at_fluid_step = false;
   double timeout_seconds;
 };
 

@@ -92,7 +92,7 @@ StepReply Participant::exchange(long step, double time, double proposed_dt,
       s.density_rate_size() != static_cast<int>(particles.size()))
     throw CouplingError("the coupler sent " + std::to_string(s.density_rate_size()) +
                         " density rates for " + std::to_string(particles.size()) + " particles");
-  StepReply out{s.dt(), {}, {}, from_proto(s.send_region()), s.stop()};
+  StepReply out{s.dt(), {}, {}, from_proto(s.send_region()), s.stop(), s.whole_step()};
   out.acceleration.reserve(particles.size());
   for (int k = 0; k + 1 < s.acceleration_size(); k += 2)
     out.acceleration.emplace_back(s.acceleration(k), s.acceleration(k + 1));

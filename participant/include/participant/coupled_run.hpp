@@ -15,7 +15,10 @@
 // set_interface_density_rates.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
+#include <sstream>
 #include <string>
 
 #include "participant/participant.hpp"
@@ -57,7 +60,7 @@ class CoupledRun {
     try {
       return loop();
     } catch (const sph::RunawayError& error) {
-      const std::string message = std::string(error.what()) +
+      const std::string message = std::string(error.what()) + overstep_note() +
                                   ". Last good snapshot: " + last_snapshot_ +
                                   " (t = " + std::to_string(last_time_) + " s)";
       participant_.report_error(settings_.name + ": " + message);
@@ -87,7 +90,8 @@ class CoupledRun {
         participant_.report_error(settings_.name + " was interrupted (Ctrl-C or SIGTERM)");
         return 130;
       }
-      const int substeps = substeps_for(reply.dt, proposed_dt_);
+      if (reply.whole_step) note_overstep(reply.dt);
+      const int substeps = reply.whole_step ? 1 : substeps_for(reply.dt, proposed_dt_);
       const double dt = reply.dt / substeps;
       for (int k = 1; k <= substeps; ++k) {
         solver_.begin_step(dt);
@@ -115,6 +119,25 @@ class CoupledRun {
     return reply;
   }
 
+  // A whole step longer than the solver's own stable one (coupling.solid_step
+  // = "fluid") is the coupler's order, but the user hears of it at once.
+  void note_overstep(double dt) {
+    const double ratio = dt / proposed_dt_;
+    if (ratio > 1.0 + 1e-9 && largest_overstep_ <= 1.0)
+      std::cerr << settings_.name << ": warning: taking the coupler's step " << dt << " s whole, "
+                << ratio << " times this solver's stable step " << proposed_dt_
+                << " s (coupling.solid_step = \"fluid\", a stability test)" << std::endl;
+    largest_overstep_ = std::max(largest_overstep_, ratio);
+  }
+
+  std::string overstep_note() const {
+    if (largest_overstep_ <= 1.0 + 1e-9) return "";
+    std::ostringstream note;
+    note << "; its steps were up to " << largest_overstep_
+         << " times its stable step, as coupling.solid_step = \"fluid\" asks";
+    return note.str();
+  }
+
   void write_snapshot() {
     last_snapshot_ = snapshots_.write(solver_.snapshot(), solver_.time());
     last_time_ = solver_.time();
@@ -126,8 +149,9 @@ class CoupledRun {
   sph::SnapshotWriter snapshots_;
   Participant participant_;
   sph::InterfaceParticles interface_;
-  double proposed_dt_ = 0.0;  // at the last exchange: sub-steps are no larger
-  long windows_ = 0;          // exchanges so far after the first: the coupler's step count
+  double proposed_dt_ = 0.0;       // at the last exchange: sub-steps are no larger
+  long windows_ = 0;               // exchanges so far after the first: the coupler's step count
+  double largest_overstep_ = 0.0;  // largest step taken whole over the proposed one
   std::string last_snapshot_ = "(none yet)";
   double last_time_ = 0.0;
 };

@@ -20,6 +20,7 @@ struct StepReply {
   std::vector<double> density_rate;     // the same, or empty: none
   sph::Region send_region;              // where to send particles from next time
   bool stop;                            // the run is over
+  bool whole_step;                      // take dt in one step, however long (a stability test)
 };
 
 class Participant {
