@@ -32,7 +32,7 @@ Mat2 fitted_gradient(const SolidParticles& P, long i, const std::vector<Neighbou
   Mat2 grad_v = Mat2::Zero();
   for (const Neighbour& neighbour : neighbours) {
     const int j = neighbour.j;
-    const double V_j = P.m[j] / P.rho[j];
+    const double V_j = P.volume[j];
     const Vec2 b_ij = fit.gradient_weight(V_j * neighbour.W_ij, P.x[j] - P.x[i]);
     grad_v += (P.v[j] - P.v[i]) * b_ij.transpose();
   }
@@ -46,6 +46,9 @@ void compute_rates(SolidParticles& P, const sph::CellGrid& grid, const SolidPara
   const double h = par.h, reach = kernel::kSupport * h, support2 = reach * reach;
   const bool quadratic = par.velocity_gradient == VelocityGradient::quadratic;
   P.neighbours.resize(P.size());
+  P.volume.resize(P.size());
+#pragma omp parallel for schedule(static)
+  for (long i = 0; i < n; ++i) P.volume[i] = P.m[i] / P.rho[i];
 
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
@@ -58,8 +61,12 @@ void compute_rates(SolidParticles& P, const sph::CellGrid& grid, const SolidPara
       P.ds[i] = Mat2::Zero();
       continue;
     }
-    Mat2 M = Mat2::Zero(), grad_v_raw = Mat2::Zero();
-    std::optional<sph::QuadraticGradient> fit;  // only when asked for: the default skips it
+    // M and the raw velocity gradient are summed as Vec2 columns (M) and rows
+    // (grad v), each a register: summed as Eigen 2x2 matrices they went
+    // through the stack, and the store-forwarding stalls took most of this pass.
+    Vec2 M_x = Vec2::Zero(), M_y = Vec2::Zero();    // columns of M
+    Vec2 Gv_x = Vec2::Zero(), Gv_y = Vec2::Zero();  // rows of grad v: grad v_x, grad v_y
+    std::optional<sph::QuadraticGradient> fit;      // only when asked for: the default skips it
     if (quadratic) fit.emplace(h);
     double drho_i = 0.0;
     grid.for_each_candidate_range(x_i, [&](int begin, int end) {
@@ -70,15 +77,22 @@ void compute_rates(SolidParticles& P, const sph::CellGrid& grid, const SolidPara
         const double r_ij = std::sqrt(r2), W_ij = kernel::W(r_ij, h);
         const Vec2 grad_W_ij = kernel::grad_W(x_ij, r_ij, h);
         neighbours.push_back({j, W_ij, grad_W_ij});
-        const double V_j = P.m[j] / P.rho[j];
+        const double V_j = P.volume[j];
         const Vec2 v_ij = v_i - P.v[j];
         // Continuity (SPEC.md "Solid": as the fluid's, without diffusion).
-        drho_i += rho_i * V_j * v_ij.dot(grad_W_ij);
-        M += sph::renormalisation_term(V_j, grad_W_ij, x_ij);
-        grad_v_raw += (V_j * -v_ij) * grad_W_ij.transpose();
+        drho_i += sph::continuity_pair(rho_i, V_j, v_ij, grad_W_ij);
+        // renormalisation_term(V_j, grad_W_ij, x_ij) = -V_j grad_W_ij (x) x_ij, by columns
+        const Vec2 Vg = V_j * grad_W_ij;
+        M_x -= x_ij.x() * Vg;
+        M_y -= x_ij.y() * Vg;
+        Gv_x -= v_ij.x() * Vg;
+        Gv_y -= v_ij.y() * Vg;
         if (fit) fit->add(V_j * W_ij, -x_ij);
       }
     });
+    Mat2 M, grad_v_raw;
+    M << M_x, M_y;
+    grad_v_raw << Gv_x.transpose(), Gv_y.transpose();
     P.L[i] = sph::renormalisation_matrix(M);
     // grad_v(a, b) = dv_a/dx_b, exact for a linear velocity field even at the
     // free surface, where the bending stress of a plate is largest, or, when

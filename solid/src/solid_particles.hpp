@@ -43,6 +43,7 @@ struct SolidParticles {
   std::vector<Mat2> sigma_L;                       // sigma L, the renormalised momentum flux
   std::vector<Vec2> a;                             // dv/dt
   std::vector<double> drho;                        // drho/dt
+  std::vector<double> volume;                      // m / rho, of this step's density
   std::vector<Mat2> ds;                            // ds/dt
   std::vector<std::vector<Neighbour>> neighbours;  // of this step's positions
 
@@ -77,6 +78,7 @@ struct SolidParticles {
     sigma_L.assign(n, Mat2::Zero());
     a.assign(n, Vec2::Zero());
     drho.assign(n, 0.0);
+    volume.assign(n, 0.0);
     ds.assign(n, Mat2::Zero());
     neighbours.resize(n);
   }
