@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 #include <string>
 #include <vector>
 
@@ -25,7 +26,18 @@ struct Measurement {
   long particles;
   int threads;
   double seconds_per_step;
+  long sorts = 0;  // fluid: neighbour re-sorts during the timed steps
 };
+
+// With --cpu the clock is the process's CPU time, summed over its threads: on
+// a shared machine one thread's CPU time is its wall time without the slices
+// the neighbours took. Wall time otherwise.
+bool cpu_clock = false;
+
+double now_seconds() {
+  if (cpu_clock) return static_cast<double>(std::clock()) / CLOCKS_PER_SEC;
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
 
 Measurement time_fluid(const std::string& case_path, double spacing, int threads, int steps) {
   omp_set_num_threads(threads);
@@ -34,10 +46,12 @@ Measurement time_fluid(const std::string& case_path, double spacing, int threads
   FluidSolver solver(case_file, cosph::fluid::read_fluid_parameters(case_file));
   // Warm up (first touch, the collapse starting), then time a fixed number of steps.
   for (int s = 0; s < steps / 10 + 1; ++s) solver.step(solver.step_limits().smallest());
-  const auto start = std::chrono::steady_clock::now();
+  const long sorts_before = solver.sorts();
+  const double start = now_seconds();
   for (int s = 0; s < steps; ++s) solver.step(solver.step_limits().smallest());
-  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-  return {static_cast<long>(solver.particles().size()), threads, elapsed.count() / steps};
+  const double elapsed = now_seconds() - start;
+  return {static_cast<long>(solver.particles().size()), threads, elapsed / steps,
+          solver.sorts() - sorts_before};
 }
 
 // The solid on the oscillating plate (Gray et al. 2001) at a given spacing.
@@ -47,15 +61,15 @@ Measurement time_solid(const std::string& case_path, double spacing, int threads
       sph::load_case(case_path, {"solid.spacing=" + std::to_string(spacing)});
   cosph::solid::SolidSolver solver(case_file, cosph::solid::read_solid_parameters(case_file));
   for (int s = 0; s < steps / 10 + 1; ++s) solver.step(solver.step_limits().smallest());
-  const auto start = std::chrono::steady_clock::now();
+  const double start = now_seconds();
   for (int s = 0; s < steps; ++s) solver.step(solver.step_limits().smallest());
-  const std::chrono::duration<double> elapsed = std::chrono::steady_clock::now() - start;
-  return {static_cast<long>(solver.particles().size()), threads, elapsed.count() / steps};
+  const double elapsed = now_seconds() - start;
+  return {static_cast<long>(solver.particles().size()), threads, elapsed / steps};
 }
 
 int bench(int argc, char** argv) {
   int steps = 200;
-  bool quick = false, fluid_only = false;
+  bool quick = false, fluid_only = false, show_sorts = false;
   std::vector<double> spacings{0.008, 0.002, 0.0009};  // about 650, 10 000, 50 000 water particles
   std::vector<int> thread_counts{1, omp_get_num_procs()};
   for (int i = 1; i < argc; ++i) {
@@ -70,17 +84,25 @@ int bench(int argc, char** argv) {
       spacings = {std::stod(argv[++i])};
     else if (option == "--threads" && i + 1 < argc)
       thread_counts = {std::stoi(argv[++i])};
+    else if (option == "--cpu")
+      cpu_clock = true;
+    else if (option == "--sorts")
+      show_sorts = true;
     else if (option == "--help" || option == "-h") {
       std::printf(
-          "usage: cosph-bench [--steps N] [--quick] [--fluid] [--spacing DX] [--threads T]\n\n"
+          "usage: cosph-bench [--steps N] [--quick] [--fluid] [--spacing DX] [--threads T]\n"
+          "                   [--cpu] [--sorts]\n\n"
           "Particle-steps per second of the fluid solver on the dam break at about 650, 10 000\n"
           "and 50 000 water particles (--quick: the first two; --spacing: that one spacing\n"
           "instead), and of the solid (--fluid: not), on one thread and on all cores\n"
-          "(--threads: on T only). Not a test.\n");
+          "(--threads: on T only). --cpu: process CPU time instead of wall time (one thread\n"
+          "on a shared machine). --sorts: the fluid's neighbour re-sorts in the timed steps,\n"
+          "after its rows. Not a test.\n");
       return 0;
     } else
       throw sph::ConfigError(
-          "usage: cosph-bench [--steps N] [--quick] [--fluid] [--spacing DX] [--threads T]");
+          "usage: cosph-bench [--steps N] [--quick] [--fluid] [--spacing DX] [--threads T] [--cpu] "
+          "[--sorts]");
   }
   const std::string case_path = std::string(COSPH_SOURCE_DIR) + "/cases/dam_break.pbtxt";
   if (quick && spacings.size() > 1) spacings.pop_back();
@@ -91,6 +113,7 @@ int bench(int argc, char** argv) {
       const Measurement m = time_fluid(case_path, spacing, threads, steps);
       std::printf("%-6s %10ld %8d %14.4f %22.4g\n", "fluid", m.particles, m.threads,
                   1e3 * m.seconds_per_step, static_cast<double>(m.particles) / m.seconds_per_step);
+      if (show_sorts) std::printf("#   %ld re-sorts in %d steps\n", m.sorts, steps);
       std::fflush(stdout);
     }
   if (fluid_only) return 0;

@@ -16,17 +16,27 @@ namespace cosph::fluid {
 FluidSolver::FluidSolver(const sph::CaseFile& case_file, const FluidParameters& parameters)
     : parameters_(parameters),
       eos_(parameters.rho0, parameters.c0),
-      particles_(build_fluid_scene(case_file, parameters)) {
-  sort_and_find_neighbours();
+      particles_(build_fluid_scene(case_file, parameters)),
+      skin_(kSkinOverH * parameters.h) {
+  find_neighbours(true);
   compute_continuity_and_gradients(particles_, pairs_, parameters_);  // only for grad_rho
   update_pressure_and_accelerations();
 }
 
-void FluidSolver::sort_and_find_neighbours() {
+void FluidSolver::find_neighbours(bool sort) {
   FluidParticles& P = particles_;
-  grid_.build(P.x, sph::kernel::kSupport * parameters_.h, 2);
-  sph::permute(grid_.order(), P.id, P.kind, P.x, P.v, P.rho, P.m, P.grad_rho);
-  pairs_.build(grid_, P.x, parameters_.h, [&P](long i) { return P.is_water(i); });
+  if (sort) {
+    // The grid, built for 2h + skin, also serves the wall pressure until the
+    // next sort: a water particle within 2h of a (fixed) wall particle now was
+    // within 2h + skin / 2 of it then.
+    const double reach = sph::kernel::kSupport * parameters_.h + skin_;
+    grid_.build(P.x, reach, 2);
+    sph::permute(grid_.order(), P.id, P.kind, P.x, P.v, P.rho, P.m, P.grad_rho);
+    x_at_sort_ = P.x;
+    candidates_.build(grid_, P.x, reach, [&P](long i) { return P.is_water(i); });
+    ++sorts_;
+  }
+  pairs_.build(candidates_, P.x, parameters_.h);
 }
 
 void FluidSolver::update_pressure_and_accelerations() {
@@ -59,13 +69,19 @@ void FluidSolver::begin_step(double dt) {
   FluidParticles& P = particles_;
   const long n = static_cast<long>(P.size());
   const double half = 0.5 * dt;
-#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
+  double moved2 = 0.0;  // the largest squared displacement since the last sort
+#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size())) reduction(max : moved2)
   for (long i = 0; i < n; ++i) {
-    if (!P.is_water(i)) continue;
+    if (!P.is_water(i)) continue;  // the walls do not move
     P.v[i] += half * (P.a[i] + P.external_a[i]);
     P.x[i] += dt * P.v[i];
+    moved2 = std::max(moved2, (P.x[i] - x_at_sort_[i]).squaredNorm());
   }
-  sort_and_find_neighbours();
+  // While no particle has moved skin / 2, a pair now within 2h was within
+  // 2h + skin at the sort, so it is in the Verlet list. A hair less than half
+  // the skin keeps round-off in these distances from mattering.
+  const double rebuild_at = 0.499 * skin_;
+  find_neighbours(moved2 > rebuild_at * rebuild_at);
   compute_continuity_and_gradients(P, pairs_, parameters_);
 #pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
   for (long i = 0; i < n; ++i)

@@ -59,13 +59,17 @@ class FluidSolver {
 
   double time() const { return time_; }
   long steps() const { return steps_; }
+  // How many times the particles were sorted and the Verlet list rebuilt.
+  long sorts() const { return sorts_; }
   const FluidParticles& particles() const { return particles_; }
   const FluidParameters& parameters() const { return parameters_; }
   WaterGauges gauges() const { return measure(particles_, parameters_); }
   sph::Snapshot snapshot() const;
 
  private:
-  void sort_and_find_neighbours();
+  // Lists this step's pairs from the Verlet list, first re-sorting the
+  // particles and rebuilding that list if it may have missed one.
+  void find_neighbours(bool sort);
   void update_pressure_and_accelerations();
   void check_state() const;
   // Why particle i's state is not physical, or nullptr if it is (or is a wall).
@@ -75,7 +79,14 @@ class FluidSolver {
   FluidParameters parameters_;
   TaitEquationOfState eos_;
   FluidParticles particles_;
-  sph::CellGrid grid_;
+  // The Verlet list's skin, a fixed fraction of h: pairs are listed within
+  // 2h + skin, and the list is rebuilt once a particle has moved skin / 2.
+  static constexpr double kSkinOverH = 0.25;
+  double skin_;
+  sph::CellGrid grid_;             // built for 2h + skin at the last sort
+  sph::CandidateList candidates_;  // the Verlet list of the last sort
+  std::vector<Vec2> x_at_sort_;    // positions at the last sort
+  long sorts_ = 0;
   sph::NeighbourList pairs_;
   double time_ = 0.0;
   long steps_ = 0;

@@ -1,11 +1,21 @@
 // The pairs within the kernel support, found once per step and read by every
-// neighbour pass of that step.
+// neighbour pass of that step, and the Verlet list they are found in.
 //
-// For each listed particle i it stores its neighbours j (r_ij < 2h, j != i)
-// and F_ij = (dW/dr)(r_ij) / r_ij, so that grad_i W_ij = F_ij x_ij: the passes
-// then do no distance tests and no kernel evaluations of their own. Each
-// thread keeps the pairs of the particles it owns under a static schedule,
-// which the passes use too, so building needs no merge.
+// NeighbourList stores, for each listed particle i, its neighbours j
+// (r_ij < 2h, j != i) and F_ij = (dW/dr)(r_ij) / r_ij, so that
+// grad_i W_ij = F_ij x_ij: the passes then do no distance tests and no kernel
+// evaluations of their own. It is built either from a cell grid (every
+// candidate of the 5x5 block of cells tested) or from a CandidateList.
+//
+// CandidateList is a Verlet list (Verlet 1967): the particles within
+// range = 2h + skin, found on the cell grid. While no particle has moved more
+// than skin / 2 since it was built, every pair now within 2h was within
+// 2h + skin then, so filtering its candidates finds exactly the neighbours a
+// grid search would, in fewer tests and without re-sorting the particles. The
+// owner of the list decides when to rebuild it; the skin decides speed only.
+//
+// Each thread keeps the lists of the particles it owns under a static
+// schedule, which the passes use too, so building needs no merge.
 #pragma once
 
 #include <omp.h>
@@ -21,28 +31,46 @@
 
 namespace sph {
 
-class NeighbourList {
+namespace detail {
+
+// One thread's lists: the first `size` entries of j (and of value, for a list
+// that keeps one per pair) are in use.
+template <bool kWithValue>
+struct PairStore {
+  std::vector<int> j;
+  std::vector<double> value;
+  std::size_t size = 0;
+
+  void reserve(std::size_t entries) {
+    if (entries <= j.size()) return;
+    const std::size_t grown = std::max(entries, 2 * j.size());
+    j.resize(grown);
+    if constexpr (kWithValue) value.resize(grown);
+  }
+};
+
+// Where each particle's list lies: in which thread's store, from where, how long.
+template <bool kWithValue>
+class PerThreadLists {
  public:
-  // Lists the neighbours of every particle i with wanted(i); others get none.
-  template <class Wanted>
-  void build(const CellGrid& grid, std::span<const Vec2> x, double h, Wanted&& wanted) {
-    const long n = static_cast<long>(x.size());
-    const double support2 = (kernel::kSupport * h) * (kernel::kSupport * h);
-    const kernel::GradientFactor gradient_factor(h);
-    first_.resize(x.size());
-    count_.resize(x.size());
-    owner_.resize(x.size());
+  // Runs append(i, store) for every i in [0, n) under a static schedule, the
+  // store being the calling thread's; append adds i's entries at its end.
+  template <class Append>
+  void fill(std::size_t n, std::size_t entries_per_particle, Append&& append) {
+    const long count = static_cast<long>(n);
+    first_.resize(n);
+    count_.resize(n);
+    owner_.resize(n);
     stores_.resize(static_cast<std::size_t>(omp_get_max_threads()));
-#pragma omp parallel if (worth_threads(x.size()))
+#pragma omp parallel if (worth_threads(n))
     {
       Store& store = stores_[static_cast<std::size_t>(omp_get_thread_num())];
-      // About 21 neighbours at h = 1.3 dx: room for 32 avoids regrowth.
-      store.reserve(32 * (x.size() / stores_.size() + 1));
+      store.reserve(entries_per_particle * (n / stores_.size() + 1));
       store.size = 0;
 #pragma omp for schedule(static)
-      for (long i = 0; i < n; ++i) {
+      for (long i = 0; i < count; ++i) {
         const std::size_t begin = store.size;
-        if (wanted(i)) list_neighbours(grid, x, i, support2, gradient_factor, store);
+        append(i, store);
         first_[i] = begin;
         count_[i] = static_cast<int>(store.size - begin);
         owner_[i] = omp_get_thread_num();
@@ -50,66 +78,147 @@ class NeighbourList {
     }
   }
 
-  std::span<const int> neighbours(long i) const {
+  std::span<const int> j(long i) const {
     return {stores_[owner_[i]].j.data() + first_[i], static_cast<std::size_t>(count_[i])};
   }
-  // F_ij in the order of neighbours(i).
-  std::span<const double> gradient_factors(long i) const {
-    return {stores_[owner_[i]].F.data() + first_[i], static_cast<std::size_t>(count_[i])};
+  std::span<const double> value(long i) const {
+    return {stores_[owner_[i]].value.data() + first_[i], static_cast<std::size_t>(count_[i])};
   }
+
+  using Store = PairStore<kWithValue>;
 
  private:
-  // One thread's pairs: the first `size` entries of j and F are in use.
-  struct Store {
-    std::vector<int> j;
-    std::vector<double> F;
-    std::size_t size = 0;
-
-    void reserve(std::size_t entries) {
-      if (entries <= j.size()) return;
-      const std::size_t grown = std::max(entries, 2 * j.size());
-      j.resize(grown);
-      F.resize(grown);
-    }
-  };
-  // Appends the neighbours of i to the store. Every candidate is written, and
-  // the end moves past it only if it is a neighbour: no branch to mispredict on
-  // half the candidates. F holds r^2 until the second loop, which vectorises.
-  static void list_neighbours(const CellGrid& grid, std::span<const Vec2> x, long i,
-                              double support2, kernel::GradientFactor gradient_factor,
-                              Store& store) {
-    std::size_t candidates = 0;
-    grid.for_each_candidate_range(x[i], [&](int begin, int end) { candidates += end - begin; });
-    const std::size_t begin = store.size;
-    store.reserve(begin + candidates);
-    int* const j_out = store.j.data();
-    double* const F_out = store.F.data();
-    const Vec2 x_i = x[i];
-    std::size_t end = begin;
-    auto scan = [&, support2](int range_begin, int range_end) {
-      for (int j = range_begin; j < range_end; ++j) {
-        const double r2 = (x_i - x[j]).squaredNorm();
-        j_out[end] = j;
-        F_out[end] = r2;
-        end += static_cast<std::size_t>(r2 < support2);
-      }
-    };
-    // i lies in one of the ranges (its own cell's row): that range is scanned
-    // in two parts around it rather than testing j != i for every candidate.
-    const int self = static_cast<int>(i);
-    grid.for_each_candidate_range(x_i, [&](int range_begin, int range_end) {
-      if (self < range_begin || self >= range_end) return scan(range_begin, range_end);
-      scan(range_begin, self);
-      scan(self + 1, range_end);
-    });
-    for (std::size_t k = begin; k < end; ++k) F_out[k] = gradient_factor(std::sqrt(F_out[k]));
-    store.size = end;
-  }
-
   std::vector<Store> stores_;
   std::vector<std::size_t> first_;
   std::vector<int> count_;
   std::vector<int> owner_;
+};
+
+// Calls scan(begin, end) for the grid's candidate ranges of particle i, i
+// itself left out: its own cell's row is split in two around it rather than
+// testing j != i for every candidate. Returns nothing; counts nothing.
+template <class Scan>
+void for_each_grid_candidate_range(const CellGrid& grid, std::span<const Vec2> x, long i,
+                                   Scan&& scan) {
+  const int self = static_cast<int>(i);
+  grid.for_each_candidate_range(x[i], [&](int range_begin, int range_end) {
+    if (self < range_begin || self >= range_end) return scan(range_begin, range_end);
+    scan(range_begin, self);
+    scan(self + 1, range_end);
+  });
+}
+
+inline std::size_t grid_candidate_count(const CellGrid& grid, const Vec2& x_i) {
+  std::size_t candidates = 0;
+  grid.for_each_candidate_range(x_i, [&](int begin, int end) { candidates += end - begin; });
+  return candidates;
+}
+
+}  // namespace detail
+
+// The Verlet list: for each particle i with wanted(i), the j != i within
+// `range`, in the grid's (sorted) order.
+class CandidateList {
+ public:
+  // The grid must have been built for at least `range` on these positions.
+  template <class Wanted>
+  void build(const CellGrid& grid, std::span<const Vec2> x, double range, Wanted&& wanted) {
+    const double range2 = range * range;
+    // About 27 candidates at h = 1.3 dx and a skin of h / 4: room for 40.
+    lists_.fill(x.size(), 40, [&](long i, Store& store) {
+      if (!wanted(i)) return;
+      store.reserve(store.size + detail::grid_candidate_count(grid, x[i]));
+      int* const j_out = store.j.data();
+      const Vec2 x_i = x[i];
+      std::size_t end = store.size;
+      // Every candidate is written, and the end moves past it only if it is
+      // within range: no branch to mispredict on half the candidates.
+      detail::for_each_grid_candidate_range(grid, x, i, [&](int begin, int stop) {
+        for (int j = begin; j < stop; ++j) {
+          j_out[end] = j;
+          end += static_cast<std::size_t>((x_i - x[j]).squaredNorm() < range2);
+        }
+      });
+      store.size = end;
+    });
+  }
+
+  std::span<const int> candidates(long i) const { return lists_.j(i); }
+
+ private:
+  using Store = detail::PairStore<false>;
+  detail::PerThreadLists<false> lists_;
+};
+
+class NeighbourList {
+ public:
+  // Lists the neighbours of every particle i with wanted(i); others get none.
+  // The grid must have been built for at least 2h on these positions.
+  template <class Wanted>
+  void build(const CellGrid& grid, std::span<const Vec2> x, double h, Wanted&& wanted) {
+    const double support2 = (kernel::kSupport * h) * (kernel::kSupport * h);
+    const kernel::GradientFactor gradient_factor(h);
+    // About 21 neighbours at h = 1.3 dx: room for 32 avoids regrowth.
+    lists_.fill(x.size(), 32, [&](long i, Store& store) {
+      if (!wanted(i)) return;
+      store.reserve(store.size + detail::grid_candidate_count(grid, x[i]));
+      const Out out{store.j.data(), store.value.data(), x[i], x, support2};
+      std::size_t end = store.size;
+      detail::for_each_grid_candidate_range(grid, x, i, [&](int begin, int stop) {
+        for (int j = begin; j < stop; ++j) out.append_if_neighbour(end, j);
+      });
+      finish(store, end, gradient_factor);
+    });
+  }
+
+  // The same from a Verlet list: its candidates within 2h of i, in its order.
+  // Exactly the grid's neighbours while no particle has moved more than half
+  // the list's skin since it was built.
+  void build(const CandidateList& candidates, std::span<const Vec2> x, double h) {
+    const double support2 = (kernel::kSupport * h) * (kernel::kSupport * h);
+    const kernel::GradientFactor gradient_factor(h);
+    lists_.fill(x.size(), 32, [&](long i, Store& store) {
+      const auto c = candidates.candidates(i);
+      if (c.empty()) return;
+      store.reserve(store.size + c.size());
+      const Out out{store.j.data(), store.value.data(), x[i], x, support2};
+      std::size_t end = store.size;
+      for (const int j : c) out.append_if_neighbour(end, j);
+      finish(store, end, gradient_factor);
+    });
+  }
+
+  std::span<const int> neighbours(long i) const { return lists_.j(i); }
+  // F_ij in the order of neighbours(i).
+  std::span<const double> gradient_factors(long i) const { return lists_.value(i); }
+
+ private:
+  using Store = detail::PairStore<true>;
+
+  // Every candidate is written, and the end moves past it only if it is a
+  // neighbour: no branch to mispredict on half the candidates. The value holds
+  // r^2 until finish(), whose loop vectorises.
+  struct Out {
+    int* j_out;
+    double* r2_out;
+    Vec2 x_i;
+    std::span<const Vec2> x;
+    double support2;
+
+    void append_if_neighbour(std::size_t& end, int j) const {
+      const double r2 = (x_i - x[j]).squaredNorm();
+      j_out[end] = j;
+      r2_out[end] = r2;
+      end += static_cast<std::size_t>(r2 < support2);
+    }
+  };
+  static void finish(Store& store, std::size_t end, kernel::GradientFactor gradient_factor) {
+    double* const F = store.value.data();
+    for (std::size_t k = store.size; k < end; ++k) F[k] = gradient_factor(std::sqrt(F[k]));
+    store.size = end;
+  }
+
+  detail::PerThreadLists<true> lists_;
 };
 
 }  // namespace sph
