@@ -28,7 +28,10 @@ inline Mat2 artificial_stress(const Mat2& sigma, double rho, double epsilon) {
   };
   const double mean = 0.5 * (sigma(0, 0) + sigma(1, 1));
   const double half_difference = 0.5 * (sigma(0, 0) - sigma(1, 1));
-  const double radius = std::hypot(half_difference, 0.5 * (sigma(0, 1) + sigma(1, 0)));
+  const double shear = 0.5 * (sigma(0, 1) + sigma(1, 0));
+  // Not std::hypot: stresses are far from overflow, and the libm call was a
+  // tenth of the solid's stress update.
+  const double radius = std::sqrt(half_difference * half_difference + shear * shear);
   const double lambda_1 = mean + radius, lambda_2 = mean - radius;
   if (!(radius > 1e-12 * std::abs(mean))) return R_principal(mean) * Mat2::Identity();
   const Mat2 P_1 = (sigma - lambda_2 * Mat2::Identity()) / (lambda_1 - lambda_2);

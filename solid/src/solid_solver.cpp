@@ -23,7 +23,7 @@ SolidSolver::SolidSolver(const sph::CaseFile& case_file, const SolidParameters& 
   mark_inert_clamp();
   sort_and_find_neighbours();
   compute_rates(particles_, grid_, parameters_);  // for the renormalisation matrices
-  update_stress();
+  update_stress(Including::inert);
   compute_accelerations(particles_, parameters_);
 }
 
@@ -47,12 +47,14 @@ void SolidSolver::mark_inert_clamp() {
                  });
 }
 
-void SolidSolver::update_stress() {
+void SolidSolver::update_stress(Including including) {
   SolidParticles& P = particles_;
   const SolidParameters& par = parameters_;
   const long n = static_cast<long>(P.size());
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
+    // An inert particle's rates are zero: its stress is the one it started with.
+    if (P.inert[i] && including == Including::active_only) continue;
     // A failed particle carries no tension, so it has no expanded state: as it
     // separates from the body, continuity would thin its density without
     // limit; it stays at rho0, and resists at once when pushed back.
@@ -99,7 +101,7 @@ void SolidSolver::begin_step(double dt) {
     P.rho[i] += dt * P.drho[i];
     P.s[i] += dt * P.ds[i];
   }
-  update_stress();
+  update_stress(Including::active_only);
   compute_accelerations(P, parameters_);
   check_state();  // before the state is shown to anyone, the coupler included
 }

@@ -71,7 +71,8 @@ class SolidSolver {
  private:
   void sort_and_find_neighbours();
   void mark_inert_clamp();
-  void update_stress();
+  enum class Including { inert, active_only };
+  void update_stress(Including including);
   void check_state() const;
 
   std::vector<long> interface_index_;  // particle indices of the last collect_interface
