@@ -41,7 +41,8 @@ Mat2 fitted_gradient(const SolidParticles& P, long i, const std::vector<Neighbou
 
 }  // namespace
 
-void compute_rates(SolidParticles& P, const sph::CellGrid& grid, const SolidParameters& par) {
+void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
+                   const SolidParameters& par) {
   const long n = static_cast<long>(P.size());
   const double h = par.h, reach = kernel::kSupport * h, support2 = reach * reach;
   const bool quadratic = par.velocity_gradient == VelocityGradient::quadratic;
@@ -69,27 +70,25 @@ void compute_rates(SolidParticles& P, const sph::CellGrid& grid, const SolidPara
     std::optional<sph::QuadraticGradient> fit;      // only when asked for: the default skips it
     if (quadratic) fit.emplace(h);
     double drho_i = 0.0;
-    grid.for_each_candidate_range(x_i, [&](int begin, int end) {
-      for (int j = begin; j < end; ++j) {
-        const Vec2 x_ij = x_i - P.x[j];
-        const double r2 = x_ij.squaredNorm();
-        if (r2 >= support2 || j == i) continue;
-        const double r_ij = std::sqrt(r2), W_ij = kernel::W(r_ij, h);
-        const Vec2 grad_W_ij = kernel::grad_W(x_ij, r_ij, h);
-        neighbours.push_back({j, W_ij, grad_W_ij});
-        const double V_j = P.volume[j];
-        const Vec2 v_ij = v_i - P.v[j];
-        // Continuity (SPEC.md "Solid": as the fluid's, without diffusion).
-        drho_i += sph::continuity_pair(rho_i, V_j, v_ij, grad_W_ij);
-        // renormalisation_term(V_j, grad_W_ij, x_ij) = -V_j grad_W_ij (x) x_ij, by columns
-        const Vec2 Vg = V_j * grad_W_ij;
-        M_x -= x_ij.x() * Vg;
-        M_y -= x_ij.y() * Vg;
-        Gv_x -= v_ij.x() * Vg;
-        Gv_y -= v_ij.y() * Vg;
-        if (fit) fit->add(V_j * W_ij, -x_ij);
-      }
-    });
+    for (const int j : candidates.candidates(i)) {
+      const Vec2 x_ij = x_i - P.x[j];
+      const double r2 = x_ij.squaredNorm();
+      if (r2 >= support2) continue;
+      const double r_ij = std::sqrt(r2), W_ij = kernel::W(r_ij, h);
+      const Vec2 grad_W_ij = kernel::grad_W(x_ij, r_ij, h);
+      neighbours.push_back({j, W_ij, grad_W_ij});
+      const double V_j = P.volume[j];
+      const Vec2 v_ij = v_i - P.v[j];
+      // Continuity (SPEC.md "Solid": as the fluid's, without diffusion).
+      drho_i += sph::continuity_pair(rho_i, V_j, v_ij, grad_W_ij);
+      // renormalisation_term(V_j, grad_W_ij, x_ij) = -V_j grad_W_ij (x) x_ij, by columns
+      const Vec2 Vg = V_j * grad_W_ij;
+      M_x -= x_ij.x() * Vg;
+      M_y -= x_ij.y() * Vg;
+      Gv_x -= v_ij.x() * Vg;
+      Gv_y -= v_ij.y() * Vg;
+      if (fit) fit->add(V_j * W_ij, -x_ij);
+    }
     Mat2 M, grad_v_raw;
     M << M_x, M_y;
     grad_v_raw << Gv_x.transpose(), Gv_y.transpose();

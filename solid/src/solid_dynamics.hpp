@@ -11,13 +11,14 @@
 
 #include "solid_parameters.hpp"
 #include "solid_particles.hpp"
-#include "sphcore/cell_grid.hpp"
+#include "sphcore/neighbour_list.hpp"
 
 namespace cosph::solid {
 
 // Reads x, v, rho, m, s; writes drho, ds (zero for failed particles, whose
 // deviator stays zero), the renormalisation matrix L and the neighbour lists.
-void compute_rates(SolidParticles& particles, const sph::CellGrid& grid,
+// The candidates (a Verlet list) must hold every j within 2h of i.
+void compute_rates(SolidParticles& particles, const sph::CandidateList& candidates,
                    const SolidParameters& parameters);
 
 // Reads the neighbour lists of compute_rates (the positions must not have

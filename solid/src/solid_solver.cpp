@@ -17,21 +17,26 @@
 namespace cosph::solid {
 
 SolidSolver::SolidSolver(const sph::CaseFile& case_file, const SolidParameters& parameters)
-    : parameters_(parameters), particles_(build_solid_scene(case_file, parameters)) {
+    : parameters_(parameters),
+      particles_(build_solid_scene(case_file, parameters)),
+      skin_(kSkinOverH * parameters.h) {
   if (parameters_.tip_gauge)
     tip_ids_ = tip_gauge_ids(particles_, *parameters_.tip_gauge, parameters_.dx);
   mark_inert_clamp();
-  sort_and_find_neighbours();
-  compute_rates(particles_, grid_, parameters_);  // for the renormalisation matrices
+  sort();
+  compute_rates(particles_, candidates_, parameters_);  // for the renormalisation matrices
   update_stress(Including::inert);
   compute_accelerations(particles_, parameters_);
 }
 
-void SolidSolver::sort_and_find_neighbours() {
+void SolidSolver::sort() {
   SolidParticles& P = particles_;
-  grid_.build(P.x, sph::kernel::kSupport * parameters_.h);
+  const double reach = sph::kernel::kSupport * parameters_.h + skin_;
+  grid_.build(P.x, reach);
   sph::permute(grid_.order(), P.id, P.x, P.v, P.x0, P.rho, P.m, P.s, P.K, P.G, P.c, P.sigma_y,
                P.clamped, P.failed, P.inert, P.external_a);
+  x_at_sort_ = P.x;
+  candidates_.build(grid_, P.x, reach, [&P](long i) { return !P.inert[i]; });
 }
 
 void SolidSolver::mark_inert_clamp() {
@@ -87,15 +92,19 @@ void SolidSolver::begin_step(double dt) {
   SolidParticles& P = particles_;
   const long n = static_cast<long>(P.size());
   const double half = 0.5 * dt;
-#pragma omp parallel for schedule(static)
+  double moved2 = 0.0;  // the largest squared displacement since the last sort
+#pragma omp parallel for schedule(static) reduction(max : moved2)
   for (long i = 0; i < n; ++i) {
     if (P.clamped[i]) continue;
     P.v[i] += half * (P.a[i] + P.external_a[i]);
     P.x[i] += dt * P.v[i];
     for (const sph::Region& wall : parameters_.walls) push_out_of_wall(wall, P.x[i], P.v[i]);
+    moved2 = std::max(moved2, (P.x[i] - x_at_sort_[i]).squaredNorm());
   }
-  sort_and_find_neighbours();
-  compute_rates(P, grid_, parameters_);
+  // Two particles that each moved less than skin / 2 have come no more than
+  // the skin closer: the list still holds every pair within 2h.
+  if (moved2 > 0.25 * skin_ * skin_) sort();
+  compute_rates(P, candidates_, parameters_);
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {
     P.rho[i] += dt * P.drho[i];

@@ -24,6 +24,7 @@
 #include "sphcore/case_file.hpp"
 #include "sphcore/cell_grid.hpp"
 #include "sphcore/interface_particles.hpp"
+#include "sphcore/neighbour_list.hpp"
 #include "sphcore/snapshot_writer.hpp"
 #include "sphcore/time_step.hpp"
 
@@ -69,7 +70,7 @@ class SolidSolver {
   sph::Snapshot snapshot() const;
 
  private:
-  void sort_and_find_neighbours();
+  void sort();  // by cell, and the Verlet list rebuilt
   void mark_inert_clamp();
   enum class Including { inert, active_only };
   void update_stress(Including including);
@@ -79,7 +80,14 @@ class SolidSolver {
   SolidParameters parameters_;
   SolidParticles particles_;
   std::vector<int> tip_ids_;
-  sph::CellGrid grid_;
+  // The Verlet list's skin, a fixed fraction of h (as the fluid's): pairs are
+  // listed within 2h + skin, and the list is rebuilt once a particle has moved
+  // skin / 2.
+  static constexpr double kSkinOverH = 0.25;
+  double skin_;
+  sph::CellGrid grid_;             // built for 2h + skin at the last sort
+  sph::CandidateList candidates_;  // the Verlet list of the last sort
+  std::vector<Vec2> x_at_sort_;    // positions at the last sort
   double time_ = 0.0;
   long steps_ = 0;
 };

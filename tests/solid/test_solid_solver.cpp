@@ -54,10 +54,12 @@ TEST(SolidDynamics, LinearVelocityFieldGivesItsGradientEverywhere) {
   sph::CellGrid grid;
   grid.build(P.x, 2.0 * par.h);
   sph::permute(grid.order(), P.id, P.x, P.v, P.rho, P.m, P.s, P.G);
+  sph::CandidateList candidates;
+  candidates.build(grid, P.x, 2.0 * par.h, [](long) { return true; });
   Mat2 A;
   A << 0.3, -1.1, 0.7, -0.2;
   for (std::size_t i = 0; i < P.size(); ++i) P.v[i] = A * P.x[i];
-  compute_rates(P, grid, par);
+  compute_rates(P, candidates, par);
   const Mat2 expected = jaumann_rate(par.G, Mat2::Zero(), A);
   int corners = 0;
   for (std::size_t i = 0; i < P.size(); ++i) {
