@@ -46,6 +46,8 @@ void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
   const long n = static_cast<long>(P.size());
   const double h = par.h, reach = kernel::kSupport * h, support2 = reach * reach;
   const bool quadratic = par.velocity_gradient == VelocityGradient::quadratic;
+  const kernel::Value W_of(h);
+  const kernel::GradientFactor gradient_factor(h);
   P.neighbours.resize(P.size());
   P.volume.resize(P.size());
 #pragma omp parallel for schedule(static)
@@ -74,8 +76,8 @@ void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
       const Vec2 x_ij = x_i - P.x[j];
       const double r2 = x_ij.squaredNorm();
       if (r2 >= support2) continue;
-      const double r_ij = std::sqrt(r2), W_ij = kernel::W(r_ij, h);
-      const Vec2 grad_W_ij = kernel::grad_W(x_ij, r_ij, h);
+      const double r_ij = std::sqrt(r2), W_ij = W_of(r_ij);
+      const Vec2 grad_W_ij = gradient_factor(r_ij) * x_ij;
       neighbours.push_back({j, W_ij, grad_W_ij});
       const double V_j = P.volume[j];
       const Vec2 v_ij = v_i - P.v[j];

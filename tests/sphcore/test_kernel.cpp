@@ -73,6 +73,22 @@ TEST(Kernel, SlopeMatchesFiniteDifferenceOfValue) {
   }
 }
 
+// The pair loops' kernel objects, whose constants are taken once per h,
+// against the plain functions, across both branches and past the support.
+TEST(Kernel, PrecomputedValueAndGradientFactorMatchThePlainFunctions) {
+  for (const double h : {0.0013, 0.026, 1.0}) {
+    const kernel::Value W_of(h);
+    const kernel::GradientFactor F_of(h);
+    for (double s = 0.01; s < 2.2; s += 0.01) {
+      const double r = s * h;
+      EXPECT_NEAR(W_of(r), kernel::W(r, h), 1e-13 * kernel::W(0.0, h)) << "s = " << s;
+      const Vec2 x(0.6 * r, -0.8 * r);
+      const Vec2 expected = kernel::grad_W(x, r, h);
+      EXPECT_LT((F_of(r) * x - expected).norm(), 1e-13 * kernel::W(0.0, h) / h) << "s = " << s;
+    }
+  }
+}
+
 TEST(Kernel, GradientPointsAlongSeparation) {
   const double h = 0.05;
   const Vec2 x_ij(0.03, -0.04);

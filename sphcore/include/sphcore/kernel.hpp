@@ -41,6 +41,23 @@ inline Vec2 grad_W(const Vec2& x_ij, double r_ij, double h) {
 // dW/dr(r, h) / r for one fixed h, with the constants worked out once: the
 // pair loops call it for every pair, where the three divisions of dW_dr()
 // dominated the cost of finding neighbours.
+// W(r, h) with the constants of one h taken once: W divides by h twice on
+// every call, and in a pair loop those divisions were the critical path.
+class Value {
+ public:
+  explicit Value(double h) : inverse_h_(1.0 / h), normalisation_(normalisation(h)) {}
+
+  double operator()(double r) const {
+    const double s = r * inverse_h_;
+    const double f =
+        s < 1.0 ? 1.0 - 1.5 * s * s + 0.75 * s * s * s : 0.25 * (2.0 - s) * (2.0 - s) * (2.0 - s);
+    return s >= 2.0 ? 0.0 : normalisation_ * f;
+  }
+
+ private:
+  double inverse_h_, normalisation_;
+};
+
 class GradientFactor {
  public:
   explicit GradientFactor(double h) : inverse_h_(1.0 / h), scale_(normalisation(h) / h) {}
