@@ -81,12 +81,16 @@ def summarise(out, output, wall, returncode, command):
     if returncode not in (0, None) and not lines:
         raise RuntimeError(f"{command} failed without a message:\n{output}")
     error = lines[0] if lines else ""
+    # A coupled run's timeseries.csv ends at its last output row; the solver's
+    # error tells when it really stopped.
+    stopped = re.search(r"t = ([0-9.eE+-]+) s, step", error)
     series_path = os.path.join(out, "timeseries.csv")
     series = cr.read_csv(series_path) if os.path.exists(series_path) else None
     if series is None or len(series["t"]) == 0:
-        return 0.0, float("nan"), error, wall
+        return float(stopped.group(1)) if stopped else 0.0, float("nan"), error, wall
     dt = series["dt"][series["dt"] > 0]
-    return float(series["t"][-1]), float(np.median(dt)) if len(dt) else float("nan"), error, wall
+    reached = max(float(series["t"][-1]), float(stopped.group(1)) if stopped else 0.0)
+    return reached, float(np.median(dt)) if len(dt) else float("nan"), error, wall
 
 
 def reason(error):
@@ -109,7 +113,7 @@ def cfl_sweeps(out_root):
             stable = not error and reached >= end * (1 - 1e-9)
             curve.append((cfl, stable, dt))
             rows.append([scene, f"{cfl:g}", f"{dt:.3g}", "runs" if stable else
-                         f"stops at t = {reached:.4f} s: {reason(error)}", f"{wall:.0f}"])
+                         f"stops at t = {reached:.3g} s: {reason(error)}", f"{wall:.0f}"])
             print(rows[-1], flush=True)
             if not stable:
                 break  # larger steps only fail sooner
@@ -124,9 +128,9 @@ def fluid_step_row(out_root):
     reached, dt, error, wall = launch("elastic_plate", out, ["coupling.solid_step=fluid"], 0.01)
     overstep = re.search(r"up to ([0-9.]+) times its stable step", error)
     outcome = "runs (not caught)" if not error else (
-        f"stops at t = {reached:.5f} s, steps up to {float(overstep.group(1)):.1f} times the "
+        f"stops at t = {reached:.3g} s, steps up to {float(overstep.group(1)):.1f} times the "
         f"solid's stable one: {reason(error)}" if overstep else
-        f"stops at t = {reached:.5f} s: {reason(error)}")
+        f"stops at t = {reached:.3g} s: {reason(error)}")
     return ["coupled, solid stepped whole at the fluid's step", "0.25", f"{dt:.3g}", outcome,
             f"{wall:.0f}"]
 
@@ -169,7 +173,7 @@ def density_rows(out_root):
         reached, dt, error, wall = launch("elastic_plate", out,
                                           MULTIRATE + [f"solid.density={1000.0 * ratio}"], 0.1)
         rows.append([f"{ratio:g}", "runs to 0.1 s" if not error else
-                     f"stops at t = {reached:.4f} s: {reason(error)}", f"{wall:.0f}"])
+                     f"stops at t = {reached:.3g} s: {reason(error)}", f"{wall:.0f}"])
         print(rows[-1], flush=True)
     return rows
 
