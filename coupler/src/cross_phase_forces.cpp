@@ -27,6 +27,11 @@ std::vector<Pair> find_pairs(const sph::InterfaceParticles& F, const sph::Interf
   sph::CellGrid grid;
   grid.build(S.x, range);
   const std::vector<int>& order = grid.order();
+  // Each phase has one h in practice, so the kernel's constants are taken
+  // again only when h_fs changes, not for every pair.
+  double kernel_h = 1.0;
+  sph::kernel::Value W_of(kernel_h);
+  sph::kernel::GradientFactor gradient_factor(kernel_h);
   for (std::size_t f = 0; f < F.size(); ++f) {
     const Vec2 x_f = F.x[f];
     grid.for_each_candidate_range(x_f, [&](int begin, int end) {
@@ -37,8 +42,12 @@ std::vector<Pair> find_pairs(const sph::InterfaceParticles& F, const sph::Interf
         const double r2 = x_fs.squaredNorm();
         if (r2 >= reach * reach || r2 == 0.0) continue;
         const double h_fs = 0.5 * reach, r = std::sqrt(r2);
-        pairs.push_back({static_cast<int>(f), s, x_fs, h_fs, sph::kernel::W(r, h_fs),
-                         sph::kernel::grad_W(x_fs, r, h_fs)});
+        if (h_fs != kernel_h) {
+          kernel_h = h_fs;
+          W_of = sph::kernel::Value(h_fs);
+          gradient_factor = sph::kernel::GradientFactor(h_fs);
+        }
+        pairs.push_back({static_cast<int>(f), s, x_fs, h_fs, W_of(r), gradient_factor(r) * x_fs});
       }
     });
   }
