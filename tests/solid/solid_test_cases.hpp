@@ -32,12 +32,13 @@ solid {
 )" + extra + "\n}\n");
 }
 
-// The lowest particle height; a block resting on the floor y = 0 has its
-// lowest particles half a spacing (5 mm) above it.
+// The lowest particle height above `floor`; a block resting on the floor
+// y = 0 has its lowest particles half a spacing (5 mm) above it.
 template <class Particles>
-double lowest_y(const Particles& particles) {
+double lowest_y(const Particles& particles, double floor = -1.0) {
   double lowest = 1.0;
-  for (const auto& x : particles.x) lowest = std::min(lowest, x.y());
+  for (const auto& x : particles.x)
+    if (x.y() > floor) lowest = std::min(lowest, x.y());
   return lowest;
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -120,6 +121,42 @@ TEST(OscillatingPlate, CoarsePeriodNearThinPlateTheory) {
       2.0 * M_PI / cantilever_angular_frequency(par.E, par.nu, par.rho0, 0.02, 0.2);
   EXPECT_NEAR(T / T_theory, 1.0, kCoarsePeriodTolerance) << "T = " << T << " s";
   EXPECT_GT(T, T_theory);  // SPH's truncated kernels at the surfaces make the plate softer
+}
+
+// The Verlet list (a skin of h / 4) is rebuilt only when a particle has moved
+// skin / 2. A block 40 mm above a clamped one, beyond the kernel's reach,
+// falls many skins towards it and meets particles it was not listed with: at every step each
+// particle must still have exactly the neighbours a search of all pairs finds.
+TEST(SolidSolver, NeighboursStayCompleteAsABlockFallsOntoAnother) {
+  const sph::CaseFile case_file = sph::load_case(testing::write_case("verlet", R"(
+run { gravity { x: 0 y: -9.81 } end_time: 1 }
+solid {
+  spacing: 0.01 density: 1000 youngs_modulus: 1e6 poisson_ratio: 0.3
+  body { min { x: 0 y: 0.04 } max { x: 0.1 y: 0.08 } }
+  body { min { x: -0.05 y: -0.06 } max { x: 0.15 y: 0 } }
+  clamp { min { x: -0.05 y: -0.06 } max { x: 0.15 y: 0 } }
+}
+)"));
+  SolidSolver solver(case_file, read_solid_parameters(case_file));
+  const double support = 2.0 * solver.parameters().h, skin = 0.25 * solver.parameters().h;
+  const double start_y = testing::lowest_y(solver.particles(), 0.0);
+  int steps = 0;
+  while (solver.time() < 0.08) {
+    solver.step(solver.step_limits().smallest());
+    const SolidParticles& P = solver.particles();
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      if (P.inert[i]) continue;  // out of every free particle's reach: no list
+      std::vector<int> listed, all;
+      for (const Neighbour& neighbour : P.neighbours[i]) listed.push_back(neighbour.j);
+      for (std::size_t j = 0; j < P.size(); ++j)
+        if (j != i && (P.x[i] - P.x[j]).norm() < support) all.push_back(static_cast<int>(j));
+      std::sort(listed.begin(), listed.end());
+      ASSERT_EQ(listed, all) << "particle " << P.id[i] << " at step " << steps;
+    }
+    ++steps;
+  }
+  // The falling block came many skins closer to the clamped one.
+  EXPECT_LT(testing::lowest_y(solver.particles(), 0.0), start_y - 4.0 * skin);
 }
 
 // A plate flung at a large fraction of its sound speed blows up; cosph-solid
