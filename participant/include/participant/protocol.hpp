@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <zmq.hpp>
 
 #include "coupling.pb.h"
@@ -37,7 +38,7 @@ std::string check_hello(const Hello& hello, Phase expected);
 
 std::string serialise(const Envelope& envelope);
 // Throws CouplingError naming `from` if the bytes are not an Envelope.
-Envelope parse(const std::string& bytes, const std::string& from);
+Envelope parse(std::string_view bytes, const std::string& from);
 
 // One-frame messages (DEALER side) and routed ones (ROUTER side: identity,
 // then the frame). Receives return nothing when the timeout passes.
