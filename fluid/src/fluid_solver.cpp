@@ -17,7 +17,7 @@ FluidSolver::FluidSolver(const sph::CaseFile& case_file, const FluidParameters& 
     : parameters_(parameters),
       eos_(parameters.rho0, parameters.c0),
       particles_(build_fluid_scene(case_file, parameters)),
-      skin_(kSkinOverH * parameters.h) {
+      skin_(sph::kSkinOverH * parameters.h) {
   find_neighbours(true);
   compute_continuity_and_gradients(particles_, pairs_, parameters_);  // only for grad_rho
   update_pressure_and_accelerations();
@@ -77,10 +77,7 @@ void FluidSolver::begin_step(double dt) {
     P.x[i] += dt * P.v[i];
     moved2 = std::max(moved2, (P.x[i] - x_at_sort_[i]).squaredNorm());
   }
-  // While no particle has moved skin / 2, a pair now within 2h was within
-  // 2h + skin at the sort, so it is in the Verlet list. A hair less than half
-  // the skin keeps round-off in these distances from mattering.
-  const double rebuild_at = 0.499 * skin_;
+  const double rebuild_at = sph::verlet_rebuild_distance(parameters_.h);
   find_neighbours(moved2 > rebuild_at * rebuild_at);
   compute_continuity_and_gradients(P, pairs_, parameters_);
 #pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))

@@ -19,7 +19,7 @@ namespace cosph::solid {
 SolidSolver::SolidSolver(const sph::CaseFile& case_file, const SolidParameters& parameters)
     : parameters_(parameters),
       particles_(build_solid_scene(case_file, parameters)),
-      skin_(kSkinOverH * parameters.h) {
+      skin_(sph::kSkinOverH * parameters.h) {
   if (parameters_.tip_gauge)
     tip_ids_ = tip_gauge_ids(particles_, *parameters_.tip_gauge, parameters_.dx);
   mark_inert_clamp();
@@ -101,9 +101,8 @@ void SolidSolver::begin_step(double dt) {
     for (const sph::Region& wall : parameters_.walls) push_out_of_wall(wall, P.x[i], P.v[i]);
     moved2 = std::max(moved2, (P.x[i] - x_at_sort_[i]).squaredNorm());
   }
-  // Two particles that each moved less than skin / 2 have come no more than
-  // the skin closer: the list still holds every pair within 2h.
-  if (moved2 > 0.25 * skin_ * skin_) sort();
+  const double rebuild_at = sph::verlet_rebuild_distance(parameters_.h);
+  if (moved2 > rebuild_at * rebuild_at) sort();
   compute_rates(P, candidates_, parameters_);
 #pragma omp parallel for schedule(static)
   for (long i = 0; i < n; ++i) {

@@ -80,11 +80,7 @@ class SolidSolver {
   SolidParameters parameters_;
   SolidParticles particles_;
   std::vector<int> tip_ids_;
-  // The Verlet list's skin, a fixed fraction of h (as the fluid's): pairs are
-  // listed within 2h + skin, and the list is rebuilt once a particle has moved
-  // skin / 2.
-  static constexpr double kSkinOverH = 0.25;
-  double skin_;
+  double skin_;                    // of the Verlet list (sph::kSkinOverH)
   sph::CellGrid grid_;             // built for 2h + skin at the last sort
   sph::CandidateList candidates_;  // the Verlet list of the last sort
   std::vector<Vec2> x_at_sort_;    // positions at the last sort

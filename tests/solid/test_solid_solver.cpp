@@ -123,8 +123,8 @@ TEST(OscillatingPlate, CoarsePeriodNearThinPlateTheory) {
   EXPECT_GT(T, T_theory);  // SPH's truncated kernels at the surfaces make the plate softer
 }
 
-// The Verlet list (a skin of h / 4) is rebuilt only when a particle has moved
-// skin / 2. A block 40 mm above a clamped one, beyond the kernel's reach,
+// The Verlet list (sph::kSkinOverH) is rebuilt only when a particle has moved
+// about skin / 2. A block 40 mm above a clamped one, beyond the kernel's reach,
 // falls many skins towards it and meets particles it was not listed with: at every step each
 // particle must still have exactly the neighbours a search of all pairs finds.
 TEST(SolidSolver, NeighboursStayCompleteAsABlockFallsOntoAnother) {
@@ -138,7 +138,8 @@ solid {
 }
 )"));
   SolidSolver solver(case_file, read_solid_parameters(case_file));
-  const double support = 2.0 * solver.parameters().h, skin = 0.25 * solver.parameters().h;
+  const double support = 2.0 * solver.parameters().h,
+               skin = sph::kSkinOverH * solver.parameters().h;
   const double start_y = testing::lowest_y(solver.particles(), 0.0);
   int steps = 0;
   while (solver.time() < 0.08) {

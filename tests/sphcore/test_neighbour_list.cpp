@@ -69,7 +69,7 @@ TEST(CandidateList, ListsEveryParticleWithinRange) {
 // gradient factor, the same as a fresh grid search finds.
 TEST(NeighbourList, FromAVerletListMatchesBruteForceAfterAMove) {
   std::mt19937 random(5);
-  const double dx = 0.01, h = 1.3 * dx, skin = 0.25 * h, range = 2.0 * h + skin;
+  const double dx = 0.01, h = 1.3 * dx, skin = sph::kSkinOverH * h, range = 2.0 * h + skin;
   std::vector<Vec2> x = jittered_lattice(dx, random);
   sph::CellGrid grid;
   grid.build(x, range, 2);
@@ -79,7 +79,7 @@ TEST(NeighbourList, FromAVerletListMatchesBruteForceAfterAMove) {
   candidates.build(grid, x, range, wanted);
   const Pairs before = brute_force(x, sph::kernel::kSupport * h, wanted);
 
-  move_each_by(x, 0.499 * skin, random);
+  move_each_by(x, sph::verlet_rebuild_distance(h), random);
   sph::NeighbourList list;
   list.build(candidates, x, h);
   const double gradient_scale = sph::kernel::normalisation(h) / (h * h);
