@@ -79,7 +79,8 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
 void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid, const FluidParameters& par,
                            const TaitEquationOfState& eos) {
   const long n = static_cast<long>(P.size());
-  const double h = par.h, support2 = support_squared(par);
+  const double support2 = support_squared(par);
+  const kernel::Value W_of(par.h);
 #pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
   for (long w = 0; w < n; ++w) {
     if (P.is_water(w)) continue;
@@ -91,12 +92,13 @@ void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid, const F
         const Vec2 x_wf = x_w - P.x[f];
         const double r2 = x_wf.squaredNorm();
         if (r2 >= support2) continue;
-        sum.add(P.p[f], P.rho[f], x_wf, kernel::W(std::sqrt(r2), h));
+        sum.add(P.p[f], P.rho[f], x_wf, W_of(std::sqrt(r2)));
       }
     });
     // Bounded below so that the Tait law can still give the wall a density.
     P.p[w] = std::max(sum.wall_pressure(par.run.gravity), -0.5 * eos.P0());
-    P.rho[w] = eos.density(P.p[w]);
+    // Most wall particles have no water in reach: rho0 without the pow().
+    P.rho[w] = P.p[w] == 0.0 ? eos.rho0() : eos.density(P.p[w]);
     P.tau[w] = Mat2::Zero();
   }
 }
