@@ -87,7 +87,8 @@ def run_or_reuse(suffix, settings, reuse):
     if os.path.exists(log):
         failed = [line for line in open(log) if line.startswith("[") and "error:" in line]
         failure = failed[0].strip() if failed else failure
-    return out, wall, failure
+    # The snapshot's path is of this machine, not of the README's reader.
+    return out, wall, failure.split(". Last good snapshot:")[0]
 
 
 def coupling_cost(out):
