@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "listed_pairs.hpp"
 #include "sphcore/cell_grid.hpp"
 #include "sphcore/kernel.hpp"
 #include "sphcore/neighbour_list.hpp"
@@ -18,7 +19,7 @@ namespace {
 
 using sph::Vec2;
 
-using Pairs = std::set<std::pair<int, int>>;
+using cosph::testing::Pairs;
 
 // A jittered lattice at spacing dx, h = 1.3 dx as the solvers use.
 std::vector<Vec2> jittered_lattice(double dx, std::mt19937& random) {
@@ -26,6 +27,16 @@ std::vector<Vec2> jittered_lattice(double dx, std::mt19937& random) {
   std::vector<Vec2> x;
   for (int a = 0; a < 40; ++a)
     for (int b = 0; b < 30; ++b) x.emplace_back(a * dx + jitter(random), b * dx + jitter(random));
+  return x;
+}
+
+// A jittered lattice sorted into the order of `grid`, built for `range`, as a
+// solver sorts its particles before it lists neighbours.
+std::vector<Vec2> sorted_lattice(double dx, std::mt19937& random, sph::CellGrid& grid,
+                                 double range) {
+  std::vector<Vec2> x = jittered_lattice(dx, random);
+  grid.build(x, range, 2);
+  sph::permute(grid.order(), x);
   return x;
 }
 
@@ -51,10 +62,8 @@ Pairs brute_force(const std::vector<Vec2>& x, double range, Wanted wanted) {
 TEST(CandidateList, ListsEveryParticleWithinRange) {
   std::mt19937 random(3);
   const double dx = 0.01, h = 1.3 * dx, range = 2.0 * h + 0.25 * h;
-  std::vector<Vec2> x = jittered_lattice(dx, random);
   sph::CellGrid grid;
-  grid.build(x, range, 2);
-  sph::permute(grid.order(), x);
+  std::vector<Vec2> x = sorted_lattice(dx, random, grid, range);
   auto wanted = [](long i) { return i % 4 != 1; };
   sph::CandidateList list;
   list.build(grid, x, range, wanted);
@@ -70,10 +79,8 @@ TEST(CandidateList, ListsEveryParticleWithinRange) {
 TEST(NeighbourList, FromAVerletListMatchesBruteForceAfterAMove) {
   std::mt19937 random(5);
   const double dx = 0.01, h = 1.3 * dx, skin = sph::kSkinOverH * h, range = 2.0 * h + skin;
-  std::vector<Vec2> x = jittered_lattice(dx, random);
   sph::CellGrid grid;
-  grid.build(x, range, 2);
-  sph::permute(grid.order(), x);
+  std::vector<Vec2> x = sorted_lattice(dx, random, grid, range);
   auto wanted = [](long i) { return i % 5 != 2; };
   sph::CandidateList candidates;
   candidates.build(grid, x, range, wanted);
@@ -82,19 +89,7 @@ TEST(NeighbourList, FromAVerletListMatchesBruteForceAfterAMove) {
   move_each_by(x, sph::verlet_rebuild_distance(h), random);
   sph::NeighbourList list;
   list.build(candidates, x, h);
-  const double gradient_scale = sph::kernel::normalisation(h) / (h * h);
-  Pairs found;
-  for (long i = 0; i < long(x.size()); ++i) {
-    const auto neighbours = list.neighbours(i);
-    const auto F = list.gradient_factors(i);
-    ASSERT_EQ(neighbours.size(), F.size());
-    for (std::size_t k = 0; k < neighbours.size(); ++k) {
-      const int j = neighbours[k];
-      EXPECT_TRUE(found.emplace(int(i), j).second);
-      const double r = (x[i] - x[j]).norm();
-      EXPECT_NEAR(F[k], sph::kernel::dW_dr(r, h) / r, 1e-12 * gradient_scale);
-    }
-  }
+  const Pairs found = cosph::testing::listed_pairs(list, x, h);
   const Pairs expected = brute_force(x, sph::kernel::kSupport * h, wanted);
   EXPECT_EQ(found, expected);
   // Not vacuous: the move changed which pairs are within 2h.
