@@ -22,7 +22,6 @@ the median dt (s) that run took; a sweep without a failure says so.
 Writes docs/results/solid_comparison.md (README marker results:solid_comparison).
 usage: /usr/bin/python3 scripts/solid_comparison.py [--out DIR] [--reuse]
 """
-import argparse
 import json
 import os
 import re
@@ -111,13 +110,7 @@ def current_default_alpha():
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=os.path.join(cr.REPO, "out", "solid_comparison"))
-    parser.add_argument("--reuse", action="store_true",
-                        help="read the runs already in --out; run only the missing ones")
-    args = parser.parse_args()
-    sm.REUSE = args.reuse
-    os.makedirs(args.out, exist_ok=True)
+    args = sm.parse_run_folder(__doc__.splitlines()[0], "solid_comparison")
     alone_settings = [f"solid.spacing={0.02 / SWEEP_ACROSS!r}"]
 
     rows = []

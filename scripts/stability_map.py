@@ -193,15 +193,23 @@ def draw(curves, path):
     fig.savefig(path, dpi=110)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=os.path.join(cr.REPO, "out", "stability"))
+def parse_run_folder(description, folder):
+    """The --out and --reuse options of a script that launches runs through
+    launch(): sets REUSE, makes the folder (default out/FOLDER), returns the
+    parsed arguments."""
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--out", default=os.path.join(cr.REPO, "out", folder))
     parser.add_argument("--reuse", action="store_true",
                         help="read the runs already in --out; run only the missing ones")
     args = parser.parse_args()
     global REUSE
     REUSE = args.reuse
     os.makedirs(args.out, exist_ok=True)
+    return args
+
+
+def main():
+    args = parse_run_folder(__doc__.splitlines()[0], "stability")
 
     cfl_rows, curves = cfl_sweeps(args.out)
     cfl_rows.append(fluid_step_row(args.out))
