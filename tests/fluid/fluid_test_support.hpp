@@ -39,6 +39,7 @@ inline FluidParameters water_parameters(double dx, const Vec2& gravity = Vec2::Z
 
 struct Neighbourhood {
   sph::CellGrid grid;
+  sph::CandidateList candidates;  // within 2h: a Verlet list without a skin
   sph::NeighbourList pairs;
 };
 
@@ -49,7 +50,9 @@ inline void sort_and_find_neighbours(FluidParticles& P, const FluidParameters& p
   n.grid.build(P.x, sph::kernel::kSupport * p.h);
   sph::permute(n.grid.order(), P.id, P.kind, P.x, P.v, P.rho, P.m);
   P.resize_derived();
-  n.pairs.build(n.grid, P.x, p.h, [&P](long i) { return P.is_water(i); });
+  n.candidates.build(n.grid, P.x, sph::kernel::kSupport * p.h,
+                     [&P](long i) { return P.is_water(i); });
+  n.pairs.build(n.candidates, P.x, p.h);
 }
 
 struct Run {

@@ -4,8 +4,7 @@
 // NeighbourList stores, for each listed particle i, its neighbours j
 // (r_ij < 2h, j != i) and F_ij = (dW/dr)(r_ij) / r_ij, so that
 // grad_i W_ij = F_ij x_ij: the passes then do no distance tests and no kernel
-// evaluations of their own. It is built either from a cell grid (every
-// candidate of the 5x5 block of cells tested) or from a CandidateList.
+// evaluations of their own. It is built from a CandidateList each step.
 //
 // CandidateList is a Verlet list (Verlet 1967): the particles within
 // range = 2h + skin, found on the cell grid. While no particle has moved more
@@ -164,39 +163,32 @@ class CandidateList {
 
 class NeighbourList {
  public:
-  // Lists the neighbours of every particle i with wanted(i); others get none.
-  // The grid must have been built for at least 2h on these positions.
-  template <class Wanted>
-  void build(const CellGrid& grid, std::span<const Vec2> x, double h, Wanted&& wanted) {
+  // The pairs of this step from a Verlet list: its candidates within 2h of i,
+  // in its order. Exactly the neighbours a grid search finds while no particle
+  // has moved more than half the list's skin since it was built.
+  void build(const CandidateList& candidates, std::span<const Vec2> x, double h) {
     const double support2 = (kernel::kSupport * h) * (kernel::kSupport * h);
     const kernel::GradientFactor gradient_factor(h);
     // About 21 neighbours at h = 1.3 dx: room for 32 avoids regrowth.
     lists_.fill(x.size(), 32, [&](long i, Store& store) {
-      if (!wanted(i)) return;
-      store.reserve(store.size + detail::grid_candidate_count(grid, x[i]));
-      const Out out{store.j.data(), store.value.data(), x[i], x, support2};
-      std::size_t end = store.size;
-      detail::for_each_grid_candidate_range(grid, x, i, [&](int begin, int stop) {
-        for (int j = begin; j < stop; ++j) out.append_if_neighbour(end, j);
-      });
-      finish(store, end, gradient_factor);
-    });
-  }
-
-  // The same from a Verlet list: its candidates within 2h of i, in its order.
-  // Exactly the grid's neighbours while no particle has moved more than half
-  // the list's skin since it was built.
-  void build(const CandidateList& candidates, std::span<const Vec2> x, double h) {
-    const double support2 = (kernel::kSupport * h) * (kernel::kSupport * h);
-    const kernel::GradientFactor gradient_factor(h);
-    lists_.fill(x.size(), 32, [&](long i, Store& store) {
       const auto c = candidates.candidates(i);
       if (c.empty()) return;
       store.reserve(store.size + c.size());
-      const Out out{store.j.data(), store.value.data(), x[i], x, support2};
+      int* const j_out = store.j.data();
+      double* const F = store.value.data();
+      const Vec2 x_i = x[i];
+      // Every candidate is written, and the end moves past it only if it is a
+      // neighbour: no branch to mispredict on a fifth of the candidates. F
+      // holds r^2 until the second loop, which vectorises.
       std::size_t end = store.size;
-      for (const int j : c) out.append_if_neighbour(end, j);
-      finish(store, end, gradient_factor);
+      for (const int j : c) {
+        const double r2 = (x_i - x[j]).squaredNorm();
+        j_out[end] = j;
+        F[end] = r2;
+        end += static_cast<std::size_t>(r2 < support2);
+      }
+      for (std::size_t k = store.size; k < end; ++k) F[k] = gradient_factor(std::sqrt(F[k]));
+      store.size = end;
     });
   }
 
@@ -206,30 +198,6 @@ class NeighbourList {
 
  private:
   using Store = detail::PairStore<true>;
-
-  // Every candidate is written, and the end moves past it only if it is a
-  // neighbour: no branch to mispredict on half the candidates. The value holds
-  // r^2 until finish(), whose loop vectorises.
-  struct Out {
-    int* j_out;
-    double* r2_out;
-    Vec2 x_i;
-    std::span<const Vec2> x;
-    double support2;
-
-    void append_if_neighbour(std::size_t& end, int j) const {
-      const double r2 = (x_i - x[j]).squaredNorm();
-      j_out[end] = j;
-      r2_out[end] = r2;
-      end += static_cast<std::size_t>(r2 < support2);
-    }
-  };
-  static void finish(Store& store, std::size_t end, kernel::GradientFactor gradient_factor) {
-    double* const F = store.value.data();
-    for (std::size_t k = store.size; k < end; ++k) F[k] = gradient_factor(std::sqrt(F[k]));
-    store.size = end;
-  }
-
   detail::PerThreadLists<true> lists_;
 };
 
