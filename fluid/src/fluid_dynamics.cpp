@@ -37,12 +37,7 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
     if (!P.is_water(i)) continue;
     const Vec2 x_i = P.x[i], v_i = P.v[i], grad_rho_i = P.grad_rho[i];
     const double rho_i = P.rho[i];
-    // M and the raw velocity gradient are summed as Vec2 columns (M) and rows
-    // (grad v), each a register: summing Eigen 2x2 matrices makes GCC split
-    // 256-bit adds across stack stores, and the store-forwarding stall doubled
-    // the cost of this pass.
-    Vec2 M_x = Vec2::Zero(), M_y = Vec2::Zero();    // columns of M
-    Vec2 Gv_x = Vec2::Zero(), Gv_y = Vec2::Zero();  // rows of grad v: grad v_x, grad v_y
+    sph::GradientSums sums;
     Vec2 grad_rho_raw = Vec2::Zero();
     double drho_i = 0.0, diffusion_i = 0.0;
     const auto neighbours = pairs.neighbours(i);
@@ -57,17 +52,11 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
       if (!P.is_water(j)) continue;
       diffusion_i +=
           density_diffusion_pair(rho_i, rho_j, F[k], grad_rho_i, P.grad_rho[j], V_j, grad_W_ij);
-      // renormalisation_term(V_j, grad_W_ij, x_ij) = -V_j grad_W_ij (x) x_ij, by columns
       const Vec2 Vg = V_j * grad_W_ij;
-      M_x -= x_ij.x() * Vg;
-      M_y -= x_ij.y() * Vg;
+      sums.add(Vg, x_ij, v_ij);
       grad_rho_raw += (rho_j - rho_i) * Vg;
-      Gv_x -= v_ij.x() * Vg;
-      Gv_y -= v_ij.y() * Vg;
     }
-    Mat2 M, grad_v_raw;
-    M << M_x, M_y;
-    grad_v_raw << Gv_x.transpose(), Gv_y.transpose();
+    const Mat2 M = sums.M(), grad_v_raw = sums.raw_velocity_gradient();
     P.drho[i] = drho_i + diffusion * diffusion_i;
     const Mat2 L = sph::renormalisation_matrix(M);
     P.grad_rho_next[i] = L * grad_rho_raw;

@@ -64,12 +64,8 @@ void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
       P.ds[i] = Mat2::Zero();
       continue;
     }
-    // M and the raw velocity gradient are summed as Vec2 columns (M) and rows
-    // (grad v), each a register: summed as Eigen 2x2 matrices they went
-    // through the stack, and the store-forwarding stalls took most of this pass.
-    Vec2 M_x = Vec2::Zero(), M_y = Vec2::Zero();    // columns of M
-    Vec2 Gv_x = Vec2::Zero(), Gv_y = Vec2::Zero();  // rows of grad v: grad v_x, grad v_y
-    std::optional<sph::QuadraticGradient> fit;      // only when asked for: the default skips it
+    sph::GradientSums sums;
+    std::optional<sph::QuadraticGradient> fit;  // only when asked for: the default skips it
     if (quadratic) fit.emplace(h);
     double drho_i = 0.0;
     for (const int j : candidates.candidates(i)) {
@@ -83,18 +79,11 @@ void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
       const Vec2 v_ij = v_i - P.v[j];
       // Continuity (SPEC.md "Solid": as the fluid's, without diffusion).
       drho_i += sph::continuity_pair(rho_i, V_j, v_ij, grad_W_ij);
-      // renormalisation_term(V_j, grad_W_ij, x_ij) = -V_j grad_W_ij (x) x_ij, by columns
-      const Vec2 Vg = V_j * grad_W_ij;
-      M_x -= x_ij.x() * Vg;
-      M_y -= x_ij.y() * Vg;
-      Gv_x -= v_ij.x() * Vg;
-      Gv_y -= v_ij.y() * Vg;
+      sums.add(V_j * grad_W_ij, x_ij, v_ij);
       if (fit) fit->add(V_j * W_ij, -x_ij);
     }
-    Mat2 M, grad_v_raw;
-    M << M_x, M_y;
-    grad_v_raw << Gv_x.transpose(), Gv_y.transpose();
-    P.L[i] = sph::renormalisation_matrix(M);
+    const Mat2 grad_v_raw = sums.raw_velocity_gradient();
+    P.L[i] = sph::renormalisation_matrix(sums.M());
     // grad_v(a, b) = dv_a/dx_b, exact for a linear velocity field even at the
     // free surface, where the bending stress of a plate is largest, or, when
     // fitted, for a quadratic one, which is what bending is. Continuity keeps
