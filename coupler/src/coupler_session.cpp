@@ -218,7 +218,8 @@ class Session {
       }
     }
     messaging_seconds_ += std::chrono::duration<double>(Clock::now() - send_start).count();
-    progress_.report(t, step, dt);
+    // The last report is forced, so the launcher's summary names the end time.
+    progress_.report(t, step, dt, stop);
     return stop;
   }
 

@@ -59,6 +59,11 @@ class ElasticPlateShort(unittest.TestCase):
         # The water pushes the plate downstream: a frozen coupling cannot pass.
         self.assertGreater(series["tip_dx"][-1], 1e-4)
 
+    def test_summary_names_the_end_time(self):
+        # The coupler's progress lines come at most twice a second; its last
+        # one must still reach the launcher's summary.
+        self.assertIn(f"simulated {END_TIME:g} s", self.log)
+
     def test_cross_phase_forces_cancel_and_follow_the_interface(self):
         coupling = read_csv(os.path.join(self.out, "coupling.csv"))
         for axis in "xy":
