@@ -5,6 +5,7 @@ Run the scripts with /usr/bin/python3 (Debian's numpy, matplotlib, h5py).
 """
 import json
 import os
+import re
 import subprocess
 import sys
 import time
@@ -48,6 +49,21 @@ def run_case(case, out_dir, settings=(), timeout=3600):
         sys.stderr.write(result.stdout)
         raise RuntimeError(f"{' '.join(command)} failed with exit code {result.returncode}")
     return elapsed
+
+
+def logged_wall_time(out_dir):
+    """The wall time the launcher reported in OUT_DIR/launcher.log, in seconds,
+    or None: what a rerun of a script that reuses the run should show."""
+    path = os.path.join(out_dir, "launcher.log")
+    if not os.path.exists(path):
+        return None
+    for line in open(path):
+        match = re.match(r"cosph: finished in (?:(\d+) h )?(?:(\d+) min )?([\d.]+) (s|min) wall", line)
+        if match:
+            hours, minutes, last, unit = match.groups()
+            seconds = float(last) * (60 if unit == "min" else 1)
+            return 3600 * int(hours or 0) + 60 * int(minutes or 0) + seconds
+    return None
 
 
 def rms_relative_error(t_model, y_model, t_ref, y_ref):
