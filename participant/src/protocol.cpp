@@ -70,6 +70,7 @@ sph::InterfaceParticles from_proto(const InterfaceState& state) {
   expect(state.smoothing_length_size(), 1, "smoothing_length");
   expect(state.sound_speed_size(), 1, "sound_speed");
   sph::InterfaceParticles P;
+  P.reserve(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i) {
     sph::Mat2 sigma;
     sigma << state.stress(4 * i), state.stress(4 * i + 1), state.stress(4 * i + 2),

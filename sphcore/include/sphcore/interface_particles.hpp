@@ -49,6 +49,10 @@ struct InterfaceParticles {
   std::vector<double> m, rho, h, c;
 
   std::size_t size() const { return x.size(); }
+  void reserve(std::size_t n) {
+    id.reserve(n), x.reserve(n), v.reserve(n), sigma.reserve(n);
+    m.reserve(n), rho.reserve(n), h.reserve(n), c.reserve(n);
+  }
   void clear() {
     id.clear(), x.clear(), v.clear(), sigma.clear();
     m.clear(), rho.clear(), h.clear(), c.clear();
