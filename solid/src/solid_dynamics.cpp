@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include "artificial_stress.hpp"
 #include "jaumann_rate.hpp"
@@ -68,12 +69,30 @@ void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
     std::optional<sph::QuadraticGradient> fit;  // only when asked for: the default skips it
     if (quadratic) fit.emplace(h);
     double drho_i = 0.0;
-    for (const int j : candidates.candidates(i)) {
+    // The pairs within 2h are listed without a branch per candidate, and the
+    // kernel is taken for all of them in one loop that vectorises: its
+    // division, one pair at a time, was the pass's hot spot.
+    const auto c = candidates.candidates(i);
+    thread_local std::vector<int> J;
+    thread_local std::vector<double> W, F;
+    J.resize(c.size()), W.resize(c.size()), F.resize(c.size());
+    std::size_t count = 0;
+    for (const int j : c) {
+      const double r2 = (x_i - P.x[j]).squaredNorm();
+      J[count] = j;
+      F[count] = r2;
+      count += static_cast<std::size_t>(r2 < support2);
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+      const double r_ij = std::sqrt(F[k]);
+      W[k] = W_of(r_ij);
+      F[k] = gradient_factor(r_ij);
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+      const int j = J[k];
       const Vec2 x_ij = x_i - P.x[j];
-      const double r2 = x_ij.squaredNorm();
-      if (r2 >= support2) continue;
-      const double r_ij = std::sqrt(r2), W_ij = W_of(r_ij);
-      const Vec2 grad_W_ij = gradient_factor(r_ij) * x_ij;
+      const double W_ij = W[k];
+      const Vec2 grad_W_ij = F[k] * x_ij;
       neighbours.push_back({j, W_ij, grad_W_ij});
       const double V_j = P.volume[j];
       const Vec2 v_ij = v_i - P.v[j];
