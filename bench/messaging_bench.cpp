@@ -5,7 +5,6 @@
 // processes over ZeroMQ ipc, as the launcher runs them. Not a test: run
 //   build/bin/cosph-bench-messaging [--round-trips N]
 // It prints a table; scripts/benchmark.py turns it into docs/results/messaging.md.
-#include <malloc.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -94,20 +93,12 @@ std::vector<double> time_round_trips(const std::string& endpoint, int round_trip
   return medians;
 }
 
-// A solver's heap holds its particles, so the allocator keeps the memory of a
-// freed message and the next one reuses it. A fresh process with a small heap
-// would instead hand every message's pages back to the system and fault them
-// in again: on this VM that made the round trip at 1000 particles five times
-// as long, a cost the coupled runs do not pay (their coupling.csv shows no
-// change with these settings).
-void keep_freed_memory() {
-  constexpr int kBytes = 256 << 20;
-  mallopt(M_MMAP_THRESHOLD, kBytes);
-  mallopt(M_TRIM_THRESHOLD, kBytes);
-}
-
 int bench(int argc, char** argv) {
-  keep_freed_memory();  // before the fork: both processes
+  // Both processes keep freed memory, as the coupler does and as a solver's
+  // large heap does by itself: a fresh process with a small heap would hand
+  // every message's pages back to the system and fault them in again, which
+  // on this VM made the round trip at 1000 particles five times as long.
+  cp::keep_freed_memory();  // before the fork: both processes
   int round_trips = 2000;
   for (int i = 1; i < argc; ++i) {
     const std::string option = argv[i];

@@ -62,10 +62,8 @@ def run_or_reuse(suffix, settings, reuse):
         text = open(log).read()
         errors = [line for line in text.splitlines() if line.startswith("[") and "error:" in line]
         failure = errors[0].strip() if errors else failure
-        if wall is None:  # the launcher's own clock: "finished in 2 min 33 s wall time"
-            found = re.search(r"finished in (?:(\d+) min )?(\d+(?:\.\d+)?) s wall time", text)
-            if found:
-                wall = 60.0 * float(found.group(1) or 0) + float(found.group(2))
+        if wall is None:  # reused: the launcher's own clock
+            wall = cr.logged_wall_time(out)
     return out, wall, failure
 
 

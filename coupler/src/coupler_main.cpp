@@ -1,7 +1,6 @@
 // cosph-coupler: the process between the fluid and the solid solver. It fixes
 // the common step and computes the cross-phase momentum terms once per pair.
 // Started by the launcher: coupler/cosph run CASE --out DIR.
-#include <malloc.h>
 
 #include <algorithm>
 #include <iostream>
@@ -87,12 +86,6 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Every step the coupler builds and frees buffers of some 100 kB (messages,
-  // pair lists). Above glibc's mmap threshold each one was mapped and unmapped
-  // again, and the page faults and TLB shootdowns took more time than the pair
-  // forces themselves: on the elastic plate the pair forces fell from 0.19 to
-  // 0.07 ms per step once freed memory stays in the heap.
-  mallopt(M_MMAP_THRESHOLD, 64 << 20);
-  mallopt(M_TRIM_THRESHOLD, 256 << 20);
+  cosph::coupling::keep_freed_memory();  // messages and pair lists of some 100 kB every step
   return sph::run_guarded("cosph-coupler", [&] { return run(argc, argv); });
 }

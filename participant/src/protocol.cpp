@@ -1,5 +1,7 @@
 #include "participant/protocol.hpp"
 
+#include <malloc.h>
+
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
@@ -97,6 +99,11 @@ std::string check_hello(const Hello& hello, Phase expected) {
   if (!(hello.max_smoothing_length() > 0.0))
     return "'" + hello.solver() + "' announced a smoothing length that is not positive";
   return {};
+}
+
+void keep_freed_memory() {
+  mallopt(M_MMAP_THRESHOLD, 64 << 20);
+  mallopt(M_TRIM_THRESHOLD, 256 << 20);
 }
 
 std::string serialise(const Envelope& envelope) {

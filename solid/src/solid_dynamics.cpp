@@ -69,20 +69,15 @@ void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
     std::optional<sph::QuadraticGradient> fit;  // only when asked for: the default skips it
     if (quadratic) fit.emplace(h);
     double drho_i = 0.0;
-    // The pairs within 2h are listed without a branch per candidate, and the
-    // kernel is taken for all of them in one loop that vectorises: its
-    // division, one pair at a time, was the pass's hot spot.
+    // The pairs within 2h are listed as the fluid's are (F holds r^2 until
+    // the kernel loop), and the kernel is taken for all of them in one loop
+    // that vectorises: its division, one pair at a time, was the pass's hot
+    // spot.
     const auto c = candidates.candidates(i);
     thread_local std::vector<int> J;
     thread_local std::vector<double> W, F;
     J.resize(c.size()), W.resize(c.size()), F.resize(c.size());
-    std::size_t count = 0;
-    for (const int j : c) {
-      const double r2 = (x_i - P.x[j]).squaredNorm();
-      J[count] = j;
-      F[count] = r2;
-      count += static_cast<std::size_t>(r2 < support2);
-    }
+    const std::size_t count = sph::filter_within(c, P.x, x_i, support2, J.data(), F.data());
     for (std::size_t k = 0; k < count; ++k) {
       const double r_ij = std::sqrt(F[k]);
       W[k] = W_of(r_ij);

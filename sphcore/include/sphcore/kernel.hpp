@@ -38,9 +38,6 @@ inline Vec2 grad_W(const Vec2& x_ij, double r_ij, double h) {
   return (dW_dr(r_ij, h) / r_ij) * x_ij;
 }
 
-// dW/dr(r, h) / r for one fixed h, with the constants worked out once: the
-// pair loops call it for every pair, where the three divisions of dW_dr()
-// dominated the cost of finding neighbours.
 // W(r, h) with the constants of one h taken once: W divides by h twice on
 // every call, and in a pair loop those divisions were the critical path.
 class Value {
@@ -58,6 +55,9 @@ class Value {
   double inverse_h_, normalisation_;
 };
 
+// dW/dr(r, h) / r for one fixed h, with the constants worked out once: the
+// pair loops call it for every pair, where the three divisions of dW_dr()
+// dominated the cost of finding neighbours.
 class GradientFactor {
  public:
   explicit GradientFactor(double h) : inverse_h_(1.0 / h), scale_(normalisation(h) / h) {}

@@ -161,6 +161,23 @@ class CandidateList {
   detail::PerThreadLists<false> lists_;
 };
 
+// Writes to j_out and r2_out, in the candidates' order, those of a particle at
+// x_i that lie closer than sqrt(range2), with their r^2, and returns how many.
+// Every candidate is written, and the end moves past it only if it is in
+// range: no branch to mispredict on a fifth of the candidates. The outputs
+// need room for all the candidates.
+inline std::size_t filter_within(std::span<const int> candidates, std::span<const Vec2> x,
+                                 const Vec2& x_i, double range2, int* j_out, double* r2_out) {
+  std::size_t count = 0;
+  for (const int j : candidates) {
+    const double r2 = (x_i - x[j]).squaredNorm();
+    j_out[count] = j;
+    r2_out[count] = r2;
+    count += static_cast<std::size_t>(r2 < range2);
+  }
+  return count;
+}
+
 class NeighbourList {
  public:
   // The pairs of this step from a Verlet list: its candidates within 2h of i,
@@ -174,21 +191,11 @@ class NeighbourList {
       const auto c = candidates.candidates(i);
       if (c.empty()) return;
       store.reserve(store.size + c.size());
-      int* const j_out = store.j.data();
-      double* const F = store.value.data();
-      const Vec2 x_i = x[i];
-      // Every candidate is written, and the end moves past it only if it is a
-      // neighbour: no branch to mispredict on a fifth of the candidates. F
-      // holds r^2 until the second loop, which vectorises.
-      std::size_t end = store.size;
-      for (const int j : c) {
-        const double r2 = (x_i - x[j]).squaredNorm();
-        j_out[end] = j;
-        F[end] = r2;
-        end += static_cast<std::size_t>(r2 < support2);
-      }
-      for (std::size_t k = store.size; k < end; ++k) F[k] = gradient_factor(std::sqrt(F[k]));
-      store.size = end;
+      // F holds r^2 until the second loop, which vectorises.
+      double* const F = store.value.data() + store.size;
+      const std::size_t count = filter_within(c, x, x[i], support2, store.j.data() + store.size, F);
+      for (std::size_t k = 0; k < count; ++k) F[k] = gradient_factor(std::sqrt(F[k]));
+      store.size += count;
     });
   }
 

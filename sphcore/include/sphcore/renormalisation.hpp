@@ -14,9 +14,6 @@ inline Mat2 renormalisation_term(double V_j, const Vec2& grad_W_ij, const Vec2& 
   return V_j * grad_W_ij * (-x_ij).transpose();
 }
 
-// L_i = M_i^-1; the identity where the support is too sparse to invert
-// reliably (a lone particle or a thin sheet of spray), since there the
-// correction would amplify noise instead of removing a bias.
 // M_i and the raw velocity gradient sum_j V_j (v_j - v_i) (x) grad_i W_ij,
 // summed over a particle's neighbours as 2-vectors (the columns of M, the rows
 // of grad v), each one register: summed as Eigen 2x2 matrices they went
@@ -45,6 +42,9 @@ struct GradientSums {
   }
 };
 
+// L_i = M_i^-1; the identity where the support is too sparse to invert
+// reliably (a lone particle or a thin sheet of spray), since there the
+// correction would amplify noise instead of removing a bias.
 inline Mat2 renormalisation_matrix(const Mat2& M) {
   constexpr double kSmallestDeterminant = 0.25;  // a full support gives det(M) = 1
   const double det = M.determinant();

@@ -1,5 +1,6 @@
 // The pairs a NeighbourList holds, each checked to carry the kernel's gradient
-// factor: shared by the grid-built and the Verlet-built list's tests.
+// factor: shared by the neighbour-list tests of test_cell_grid.cpp and
+// test_neighbour_list.cpp.
 #pragma once
 
 #include <gtest/gtest.h>
