@@ -41,64 +41,53 @@ void FluidSolver::find_neighbours(bool sort) {
 
 void FluidSolver::update_pressure_and_accelerations() {
   FluidParticles& P = particles_;
-  const long n = static_cast<long>(P.size());
-#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
-  for (long i = 0; i < n; ++i)
+  sph::parallel_for(P.size(), [&](long i) {
     if (P.is_water(i)) P.p[i] = eos_.pressure(P.rho[i]);
+  });
   compute_wall_pressure(P, grid_, parameters_, eos_);
   compute_accelerations(P, pairs_, parameters_);
 }
 
 sph::StepLimits FluidSolver::step_limits() const {
   const FluidParticles& P = particles_;
-  const long n = static_cast<long>(P.size());
-  double v_max2 = 0.0, a_max2 = 0.0;
-#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size())) \
-    reduction(max                                                           \
-              : v_max2, a_max2)
-  for (long i = 0; i < n; ++i) {
-    if (!P.is_water(i)) continue;
-    v_max2 = std::max(v_max2, P.v[i].squaredNorm());
-    a_max2 = std::max(a_max2, P.a[i].squaredNorm());
-  }
+  const double v_max2 = sph::parallel_max(
+      P.size(), 0.0, [&](long i) { return P.is_water(i) ? P.v[i].squaredNorm() : 0.0; });
+  const double a_max2 = sph::parallel_max(
+      P.size(), 0.0, [&](long i) { return P.is_water(i) ? P.a[i].squaredNorm() : 0.0; });
   return sph::step_limits(parameters_.run.cfl, parameters_.h, parameters_.c0, std::sqrt(v_max2),
                           std::sqrt(a_max2), parameters_.mu / parameters_.rho0);
 }
 
 void FluidSolver::begin_step(double dt) {
   FluidParticles& P = particles_;
-  const long n = static_cast<long>(P.size());
   const double half = 0.5 * dt;
-  double moved2 = 0.0;  // the largest squared displacement since the last sort
-#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size())) reduction(max : moved2)
-  for (long i = 0; i < n; ++i) {
-    if (!P.is_water(i)) continue;  // the walls do not move
+  // The largest squared displacement since the last sort.
+  const double moved2 = sph::parallel_max(P.size(), 0.0, [&](long i) {
+    if (!P.is_water(i)) return 0.0;  // the walls do not move
     P.v[i] += half * (P.a[i] + P.external_a[i]);
     P.x[i] += dt * P.v[i];
-    moved2 = std::max(moved2, (P.x[i] - x_at_sort_[i]).squaredNorm());
-  }
+    return (P.x[i] - x_at_sort_[i]).squaredNorm();
+  });
   const double rebuild_at = sph::verlet_rebuild_distance(parameters_.h);
   find_neighbours(moved2 > rebuild_at * rebuild_at);
   compute_continuity_and_gradients(P, pairs_, parameters_);
-#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
-  for (long i = 0; i < n; ++i)
+  sph::parallel_for(P.size(), [&](long i) {
     if (P.is_water(i)) P.rho[i] += dt * P.drho[i];
+  });
   update_pressure_and_accelerations();
   check_state();  // before the state is shown to anyone, the coupler included
 }
 
 void FluidSolver::end_step(double dt) {
   FluidParticles& P = particles_;
-  const long n = static_cast<long>(P.size());
   const double half = 0.5 * dt;
-#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
-  for (long i = 0; i < n; ++i)
-    if (P.is_water(i)) {
-      P.v[i] += half * (P.a[i] + P.external_a[i]);
-      // Computed by the coupler at the same positions as this step's drho,
-      // after the pressure was taken from rho: it acts from the next step on.
-      P.rho[i] += dt * P.external_drho[i];
-    }
+  sph::parallel_for(P.size(), [&](long i) {
+    if (!P.is_water(i)) return;
+    P.v[i] += half * (P.a[i] + P.external_a[i]);
+    // Computed by the coupler at the same positions as this step's drho,
+    // after the pressure was taken from rho: it acts from the next step on.
+    P.rho[i] += dt * P.external_drho[i];
+  });
   time_ += dt;
   ++steps_;
   check_state();
@@ -155,12 +144,9 @@ const char* FluidSolver::runaway_reason(std::size_t i) const {
 void FluidSolver::check_state() const {
   const FluidParticles& P = particles_;
   // The first particle in index order that went wrong, as a serial scan finds.
-  const long n = static_cast<long>(P.size());
-  long first = n;
-#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size())) reduction(min : first)
-  for (long i = 0; i < n; ++i)
-    if (runaway_reason(static_cast<std::size_t>(i)) != nullptr) first = std::min(first, i);
-  if (first == n) return;
+  const long first = sph::parallel_find_first(
+      P.size(), [&](long i) { return runaway_reason(static_cast<std::size_t>(i)) != nullptr; });
+  if (first == static_cast<long>(P.size())) return;
   const std::size_t i = static_cast<std::size_t>(first);
   std::ostringstream message;
   message << "water particle " << P.id[i] << " at (" << P.x[i].x() << ", " << P.x[i].y()

@@ -8,6 +8,7 @@
 #include "jaumann_rate.hpp"
 #include "sphcore/kernel.hpp"
 #include "sphcore/pair_terms.hpp"
+#include "sphcore/parallel.hpp"
 #include "sphcore/quadratic_gradient.hpp"
 #include "sphcore/renormalisation.hpp"
 
@@ -44,18 +45,15 @@ Mat2 fitted_gradient(const SolidParticles& P, long i, const std::vector<Neighbou
 
 void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
                    const SolidParameters& par) {
-  const long n = static_cast<long>(P.size());
   const double h = par.h, reach = kernel::kSupport * h, support2 = reach * reach;
   const bool quadratic = par.velocity_gradient == VelocityGradient::quadratic;
   const kernel::Value W_of(h);
   const kernel::GradientFactor gradient_factor(h);
   P.neighbours.resize(P.size());
   P.volume.resize(P.size());
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) P.volume[i] = P.m[i] / P.rho[i];
+  sph::parallel_for(P.size(), [&](long i) { P.volume[i] = P.m[i] / P.rho[i]; });
 
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
+  sph::parallel_for(P.size(), [&](long i) {
     const Vec2 x_i = P.x[i], v_i = P.v[i];
     const double rho_i = P.rho[i];
     std::vector<Neighbour>& neighbours = P.neighbours[i];
@@ -63,7 +61,7 @@ void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
     if (P.inert[i]) {
       P.drho[i] = 0.0;
       P.ds[i] = Mat2::Zero();
-      continue;
+      return;
     }
     sph::GradientSums sums;
     std::optional<sph::QuadraticGradient> fit;  // only when asked for: the default skips it
@@ -107,21 +105,19 @@ void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
                                             : Mat2(grad_v_raw * P.L[i].transpose());
     P.drho[i] = drho_i;
     P.ds[i] = P.failed[i] ? Mat2::Zero() : jaumann_rate(P.G[i], P.s[i], grad_v);
-  }
+  });
 }
 
 void compute_accelerations(SolidParticles& P, const SolidParameters& par) {
-  const long n = static_cast<long>(P.size());
   const double h = par.h;
   const bool with_artificial_stress = par.artificial_stress.enabled;
   const double n_exponent = par.artificial_stress.exponent;
   const double inverse_W_dx = 1.0 / kernel::W(par.dx, h);
 
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
+  sph::parallel_for(P.size(), [&](long i) {
     if (P.clamped[i]) {
       P.a[i] = Vec2::Zero();
-      continue;
+      return;
     }
     const Vec2 x_i = P.x[i], v_i = P.v[i];
     const double rho_i = P.rho[i], c_i = P.c[i];
@@ -141,7 +137,7 @@ void compute_accelerations(SolidParticles& P, const SolidParameters& par) {
       }
     }
     P.a[i] = a_i;
-  }
+  });
 }
 
 }  // namespace cosph::solid

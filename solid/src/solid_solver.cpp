@@ -9,6 +9,7 @@
 #include "solid_dynamics.hpp"
 #include "solid_scene.hpp"
 #include "sphcore/kernel.hpp"
+#include "sphcore/parallel.hpp"
 #include "sphcore/permutation.hpp"
 #include "sphcore/runaway_error.hpp"
 #include "von_mises_failure.hpp"
@@ -55,11 +56,9 @@ void SolidSolver::mark_inert_clamp() {
 void SolidSolver::update_stress(Including including) {
   SolidParticles& P = particles_;
   const SolidParameters& par = parameters_;
-  const long n = static_cast<long>(P.size());
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
+  sph::parallel_for(P.size(), [&](long i) {
     // An inert particle's rates are zero: its stress is the one it started with.
-    if (P.inert[i] && including == Including::active_only) continue;
+    if (P.inert[i] && including == Including::active_only) return;
     // A failed particle carries no tension, so it has no expanded state: as it
     // separates from the body, continuity would thin its density without
     // limit; it stays at rho0, and resists at once when pushed back.
@@ -73,7 +72,7 @@ void SolidSolver::update_stress(Including including) {
     P.R[i] = par.artificial_stress.enabled
                  ? artificial_stress(P.sigma[i], P.rho[i], par.artificial_stress.epsilon)
                  : Mat2::Zero();
-  }
+  });
 }
 
 sph::StepLimits SolidSolver::step_limits() const {
@@ -90,25 +89,22 @@ sph::StepLimits SolidSolver::step_limits() const {
 
 void SolidSolver::begin_step(double dt) {
   SolidParticles& P = particles_;
-  const long n = static_cast<long>(P.size());
   const double half = 0.5 * dt;
-  double moved2 = 0.0;  // the largest squared displacement since the last sort
-#pragma omp parallel for schedule(static) reduction(max : moved2)
-  for (long i = 0; i < n; ++i) {
-    if (P.clamped[i]) continue;
+  // The largest squared displacement since the last sort.
+  const double moved2 = sph::parallel_max(P.size(), 0.0, [&](long i) {
+    if (P.clamped[i]) return 0.0;
     P.v[i] += half * (P.a[i] + P.external_a[i]);
     P.x[i] += dt * P.v[i];
     for (const sph::Region& wall : parameters_.walls) push_out_of_wall(wall, P.x[i], P.v[i]);
-    moved2 = std::max(moved2, (P.x[i] - x_at_sort_[i]).squaredNorm());
-  }
+    return (P.x[i] - x_at_sort_[i]).squaredNorm();
+  });
   const double rebuild_at = sph::verlet_rebuild_distance(parameters_.h);
   if (moved2 > rebuild_at * rebuild_at) sort();
   compute_rates(P, candidates_, parameters_);
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
+  sph::parallel_for(P.size(), [&](long i) {
     P.rho[i] += dt * P.drho[i];
     P.s[i] += dt * P.ds[i];
-  }
+  });
   update_stress(Including::active_only);
   compute_accelerations(P, parameters_);
   check_state();  // before the state is shown to anyone, the coupler included
@@ -116,11 +112,10 @@ void SolidSolver::begin_step(double dt) {
 
 void SolidSolver::end_step(double dt) {
   SolidParticles& P = particles_;
-  const long n = static_cast<long>(P.size());
   const double half = 0.5 * dt;
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i)
+  sph::parallel_for(P.size(), [&](long i) {
     if (!P.clamped[i]) P.v[i] += half * (P.a[i] + P.external_a[i]);
+  });
   time_ += dt;
   ++steps_;
   check_state();

@@ -2,14 +2,13 @@
 
 #include "hourglass_control.hpp"
 #include "sphcore/pair_terms.hpp"
+#include "sphcore/parallel.hpp"
 #include "st_venant_kirchhoff.hpp"
 
 namespace cosph::solid::tl {
 
 void compute_deformation_and_stress(TLParticles& P) {
-  const long n = static_cast<long>(P.size());
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
+  sph::parallel_for(P.size(), [&](long i) {
     const Vec2 u_i = P.x[i] - P.X[i];
     Mat2 grad_u = Mat2::Zero();
     for (const ReferenceNeighbour& neighbour : P.neighbours[i]) {
@@ -25,17 +24,15 @@ void compute_deformation_and_stress(TLParticles& P) {
     P.sigma[i] = stress.sigma;
     P.sigma_zz[i] = stress.sigma_zz;
     P.strain_energy[i] = stress.psi;
-  }
+  });
 }
 
 void compute_accelerations(TLParticles& P, const ForceParameters& par) {
-  const long n = static_cast<long>(P.size());
   const bool with_hourglass = par.hourglass_alpha > 0.0;
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
+  sph::parallel_for(P.size(), [&](long i) {
     if (P.clamped[i]) {
       P.a[i] = Vec2::Zero();
-      continue;
+      return;
     }
     const Vec2 x_i = P.x[i], v_i = P.v[i], X_i = P.X[i];
     const double m_i = P.m[i], V0_i = P.V0[i], c_i = P.c[i];
@@ -60,7 +57,7 @@ void compute_accelerations(TLParticles& P, const ForceParameters& par) {
                                neighbour.W0, P.X[j] - X_i, -x_ij);
     }
     P.a[i] = par.gravity + f_i / m_i;
-  }
+  });
 }
 
 }  // namespace cosph::solid::tl

@@ -6,6 +6,7 @@
 
 #include "reference_configuration.hpp"
 #include "sphcore/pair_terms.hpp"
+#include "sphcore/parallel.hpp"
 #include "sphcore/runaway_error.hpp"
 #include "wall_contact.hpp"
 
@@ -49,27 +50,24 @@ sph::StepLimits TLSolver::step_limits() const {
 
 void TLSolver::begin_step(double dt) {
   TLParticles& P = particles_;
-  const long n = static_cast<long>(P.size());
   const double half = 0.5 * dt;
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
-    if (P.clamped[i]) continue;
+  sph::parallel_for(P.size(), [&](long i) {
+    if (P.clamped[i]) return;
     P.v[i] += half * (P.a[i] + P.external_a[i]);
     P.x[i] += dt * P.v[i];
     // solid.walls: the same kinematic contact as the Jaumann solid's.
     for (const sph::Region& wall : parameters_.walls) push_out_of_wall(wall, P.x[i], P.v[i]);
-  }
+  });
   update();
   check_state();  // before the state is shown to anyone, the coupler included
 }
 
 void TLSolver::end_step(double dt) {
   TLParticles& P = particles_;
-  const long n = static_cast<long>(P.size());
   const double half = 0.5 * dt;
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i)
+  sph::parallel_for(P.size(), [&](long i) {
     if (!P.clamped[i]) P.v[i] += half * (P.a[i] + P.external_a[i]);
+  });
   time_ += dt;
   ++steps_;
   check_state();

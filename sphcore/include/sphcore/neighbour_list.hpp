@@ -61,8 +61,9 @@ class PerThreadLists {
     count_.resize(n);
     owner_.resize(n);
     stores_.resize(static_cast<std::size_t>(omp_get_max_threads()));
-#pragma omp parallel if (worth_threads(n))
-    {
+    // Run by each thread of the team, or alone (see threaded()): the loop
+    // below then binds to no team and covers all of [0, n).
+    auto fill_own_share = [&] {
       Store& store = stores_[static_cast<std::size_t>(omp_get_thread_num())];
       store.reserve(entries_per_particle * (n / stores_.size() + 1));
       store.size = 0;
@@ -74,6 +75,12 @@ class PerThreadLists {
         count_[i] = static_cast<int>(store.size - begin);
         owner_[i] = omp_get_thread_num();
       }
+    };
+    if (threaded(n)) {
+#pragma omp parallel
+      fill_own_share();
+    } else {
+      fill_own_share();
     }
   }
 

@@ -19,12 +19,10 @@ void permute(const std::vector<int>& order, Fields&... fields) {
   std::apply(
       [&order, &fields...](Fields&... sorted) {
         (sorted.resize(fields.size()), ...);
-        const long n = static_cast<long>(order.size());
-#pragma omp parallel for schedule(static) if (worth_threads(order.size()))
-        for (long k = 0; k < n; ++k) {
+        parallel_for(order.size(), [&](long k) {
           const int from = order[k];
           ((sorted[k] = fields[from]), ...);
-        }
+        });
         (fields.swap(sorted), ...);
       },
       scratch);
