@@ -7,6 +7,7 @@
 #include "solid_scene.hpp"
 #include "sphcore/cell_grid.hpp"
 #include "sphcore/kernel.hpp"
+#include "sphcore/parallel.hpp"
 #include "sphcore/renormalisation.hpp"
 #include "st_venant_kirchhoff.hpp"
 
@@ -47,15 +48,13 @@ TLParticles build_reference_configuration(const sph::CaseFile& case_file,
 }
 
 void find_reference_neighbours(TLParticles& P, double h) {
-  const long n = static_cast<long>(P.size());
   const double reach = kernel::kSupport * h, support2 = reach * reach;
   sph::CellGrid grid;
   grid.build(P.X, reach);
   const std::vector<int>& order = grid.order();  // candidates come as ranges of this order
   P.neighbours.assign(P.size(), {});
   P.L0.assign(P.size(), Mat2::Identity());
-#pragma omp parallel for schedule(static)
-  for (long i = 0; i < n; ++i) {
+  sph::parallel_for(P.size(), [&](long i) {
     const Vec2 X_i = P.X[i];
     std::vector<ReferenceNeighbour>& neighbours = P.neighbours[i];
     Mat2 M = Mat2::Zero();
@@ -74,7 +73,7 @@ void find_reference_neighbours(TLParticles& P, double h) {
     P.L0[i] = reference_correction(M);
     for (ReferenceNeighbour& neighbour : neighbours)
       neighbour.grad_W0_tilde = P.L0[i] * neighbour.grad_W0;
-  }
+  });
 }
 
 }  // namespace cosph::solid::tl

@@ -48,12 +48,11 @@ void CellGrid::build(std::span<const Vec2> x, double range, int subdivisions) {
   const std::size_t cell_count = static_cast<std::size_t>(nx_ * ny_);
   cell_begin_.assign(cell_count + 1, 0);
   cell_of_.resize(n);
-#pragma omp parallel for schedule(static) if (parallel)
-  for (long i = 0; i < count; ++i) {
+  parallel_for(n, [&](long i) {
     const long cx = std::clamp(cell_coordinate(x[i].x(), lo.x()), 0L, nx_ - 1);
     const long cy = std::clamp(cell_coordinate(x[i].y(), lo.y()), 0L, ny_ - 1);
     cell_of_[i] = cy * nx_ + cx;
-  }
+  });
   for (std::size_t i = 0; i < n; ++i) ++cell_begin_[cell_of_[i] + 1];
   for (std::size_t c = 0; c < cell_count; ++c) cell_begin_[c + 1] += cell_begin_[c];
   order_.resize(n);
