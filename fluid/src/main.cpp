@@ -25,8 +25,9 @@ int run_fluid(int argc, char** argv) {
   sph::make_output_dir(args.out_dir);
   sph::install_stop_handlers();
 
+  sph::RunThreads threads(parameters.run.threads);
   FluidSolver solver(case_file, parameters);
-  omp_set_num_threads(sph::choose_threads(parameters.run.threads, solver.particles().size()));
+  threads.settle(solver.particles().size());
   std::cout << "cosph-fluid: " << solver.gauges().water_particles << " water and "
             << solver.particles().size() - solver.gauges().water_particles
             << " wall particles, dx = " << parameters.dx << " m, h = " << parameters.h

@@ -30,8 +30,9 @@ int run_solid_tl(int argc, char** argv) {
   sph::make_output_dir(args.out_dir);
   sph::install_stop_handlers();
 
+  sph::RunThreads threads(parameters.run.threads);
   TLSolver solver(case_file, parameters);
-  omp_set_num_threads(sph::choose_threads(parameters.run.threads, solver.particles().size()));
+  threads.settle(solver.particles().size());
   long clamped = 0;
   for (auto c : solver.particles().clamped) clamped += c;
   std::cout << "cosph-solid-tl: " << solver.particles().size() << " solid particles (" << clamped

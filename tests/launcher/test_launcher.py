@@ -165,6 +165,19 @@ class LauncherTest(unittest.TestCase):
                          ["--set", "a=1", "--set", "b.c=x y"])
         self.assert_all_gone(3)
 
+    def test_spinning_openmp_threads_are_warned_of_when_processes_share_cores(self):
+        warning = "cosph: warning: OMP_WAIT_POLICY=active: 3 processes share"
+        rc, _, err = self.run_case(FAKE_PLAN=THREE, FAKE_STEPS="2", OMP_WAIT_POLICY="active")
+        self.assertEqual(rc, 0, err)
+        self.assertIn(warning, err)
+        rc, _, err = self.run_case(FAKE_PLAN=THREE, FAKE_STEPS="2", OMP_WAIT_POLICY="passive")
+        self.assertEqual(rc, 0, err)
+        self.assertNotIn("OMP_WAIT_POLICY", err)
+        # One process has the cores to itself: spinning is its own business.
+        rc, _, err = self.run_case(OMP_WAIT_POLICY="active")
+        self.assertEqual(rc, 0, err)
+        self.assertNotIn("OMP_WAIT_POLICY", err)
+
     def test_endpoint_option(self):
         rc, _, err = self.run_case("--endpoint", "tcp://127.0.0.1:5555",
                                    FAKE_PLAN="cosph-fluid cosph-solid", FAKE_STEPS="2")
