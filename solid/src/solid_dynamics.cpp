@@ -51,9 +51,10 @@ void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
   const kernel::GradientFactor gradient_factor(h);
   P.neighbours.resize(P.size());
   P.volume.resize(P.size());
-  sph::parallel_for(P.size(), [&](long i) { P.volume[i] = P.m[i] / P.rho[i]; });
+  sph::parallel_for(P.size(), sph::kTeamAtAnySize,
+                    [&](long i) { P.volume[i] = P.m[i] / P.rho[i]; });
 
-  sph::parallel_for(P.size(), [&](long i) {
+  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
     const Vec2 x_i = P.x[i], v_i = P.v[i];
     const double rho_i = P.rho[i];
     std::vector<Neighbour>& neighbours = P.neighbours[i];
@@ -114,7 +115,7 @@ void compute_accelerations(SolidParticles& P, const SolidParameters& par) {
   const double n_exponent = par.artificial_stress.exponent;
   const double inverse_W_dx = 1.0 / kernel::W(par.dx, h);
 
-  sph::parallel_for(P.size(), [&](long i) {
+  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
     if (P.clamped[i]) {
       P.a[i] = Vec2::Zero();
       return;

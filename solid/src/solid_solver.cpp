@@ -56,7 +56,7 @@ void SolidSolver::mark_inert_clamp() {
 void SolidSolver::update_stress(Including including) {
   SolidParticles& P = particles_;
   const SolidParameters& par = parameters_;
-  sph::parallel_for(P.size(), [&](long i) {
+  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
     // An inert particle's rates are zero: its stress is the one it started with.
     if (P.inert[i] && including == Including::active_only) return;
     // A failed particle carries no tension, so it has no expanded state: as it
@@ -91,7 +91,7 @@ void SolidSolver::begin_step(double dt) {
   SolidParticles& P = particles_;
   const double half = 0.5 * dt;
   // The largest squared displacement since the last sort.
-  const double moved2 = sph::parallel_max(P.size(), 0.0, [&](long i) {
+  const double moved2 = sph::parallel_max(P.size(), 0.0, sph::kTeamAtAnySize, [&](long i) {
     if (P.clamped[i]) return 0.0;
     P.v[i] += half * (P.a[i] + P.external_a[i]);
     P.x[i] += dt * P.v[i];
@@ -101,7 +101,7 @@ void SolidSolver::begin_step(double dt) {
   const double rebuild_at = sph::verlet_rebuild_distance(parameters_.h);
   if (moved2 > rebuild_at * rebuild_at) sort();
   compute_rates(P, candidates_, parameters_);
-  sph::parallel_for(P.size(), [&](long i) {
+  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
     P.rho[i] += dt * P.drho[i];
     P.s[i] += dt * P.ds[i];
   });
@@ -113,7 +113,7 @@ void SolidSolver::begin_step(double dt) {
 void SolidSolver::end_step(double dt) {
   SolidParticles& P = particles_;
   const double half = 0.5 * dt;
-  sph::parallel_for(P.size(), [&](long i) {
+  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
     if (!P.clamped[i]) P.v[i] += half * (P.a[i] + P.external_a[i]);
   });
   time_ += dt;

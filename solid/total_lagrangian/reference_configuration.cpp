@@ -54,7 +54,7 @@ void find_reference_neighbours(TLParticles& P, double h) {
   const std::vector<int>& order = grid.order();  // candidates come as ranges of this order
   P.neighbours.assign(P.size(), {});
   P.L0.assign(P.size(), Mat2::Identity());
-  sph::parallel_for(P.size(), [&](long i) {
+  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
     const Vec2 X_i = P.X[i];
     std::vector<ReferenceNeighbour>& neighbours = P.neighbours[i];
     Mat2 M = Mat2::Zero();

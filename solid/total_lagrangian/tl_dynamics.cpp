@@ -8,7 +8,7 @@
 namespace cosph::solid::tl {
 
 void compute_deformation_and_stress(TLParticles& P) {
-  sph::parallel_for(P.size(), [&](long i) {
+  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
     const Vec2 u_i = P.x[i] - P.X[i];
     Mat2 grad_u = Mat2::Zero();
     for (const ReferenceNeighbour& neighbour : P.neighbours[i]) {
@@ -29,7 +29,7 @@ void compute_deformation_and_stress(TLParticles& P) {
 
 void compute_accelerations(TLParticles& P, const ForceParameters& par) {
   const bool with_hourglass = par.hourglass_alpha > 0.0;
-  sph::parallel_for(P.size(), [&](long i) {
+  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
     if (P.clamped[i]) {
       P.a[i] = Vec2::Zero();
       return;

@@ -51,7 +51,7 @@ sph::StepLimits TLSolver::step_limits() const {
 void TLSolver::begin_step(double dt) {
   TLParticles& P = particles_;
   const double half = 0.5 * dt;
-  sph::parallel_for(P.size(), [&](long i) {
+  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
     if (P.clamped[i]) return;
     P.v[i] += half * (P.a[i] + P.external_a[i]);
     P.x[i] += dt * P.v[i];
@@ -65,7 +65,7 @@ void TLSolver::begin_step(double dt) {
 void TLSolver::end_step(double dt) {
   TLParticles& P = particles_;
   const double half = 0.5 * dt;
-  sph::parallel_for(P.size(), [&](long i) {
+  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
     if (!P.clamped[i]) P.v[i] += half * (P.a[i] + P.external_a[i]);
   });
   time_ += dt;

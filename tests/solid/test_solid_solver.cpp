@@ -126,8 +126,8 @@ TEST(OscillatingPlate, CoarsePeriodNearThinPlateTheory) {
 }
 
 // The thread count changes nothing, to the last bit: each particle sums its
-// own pairs in one order whatever thread owns it. The plate at 1 mm (4 400
-// particles) is above the size where the loops take threads at all.
+// own pairs in one order whatever thread owns it. On the plate at 1 mm (4 400
+// particles), where the fluid's loops would take threads too.
 TEST(SolidSolver, ResultDoesNotDependOnTheThreadCount) {
   const sph::CaseFile case_file = sph::load_case(plate_case_path(), {"solid.spacing=0.001"});
   const SolidParameters par = read_solid_parameters(case_file);

@@ -18,14 +18,23 @@ inline bool worth_threads(std::size_t particles) {
   return particles >= 4096;
 }
 
-// Whether a loop over `particles` runs on the team. A plain loop when not,
-// rather than a region of one thread: libgomp starts even that region as a
-// team and ends it with a futex system call (its barrier wakes whoever may
-// wait); without the seven of each step, the elastic plate's solid alone
-// (800 particles) runs 6 % faster.
-inline bool threaded(std::size_t particles) {
-  return worth_threads(particles) && omp_get_max_threads() > 1;
+// A loop runs on the OpenMP team when the caller allows it (`use_team`: by
+// default worth_threads) and the team has more than one thread; otherwise it
+// runs as a plain loop rather than as a region of one thread, which libgomp
+// still starts as a team and ends with a futex system call (its barrier wakes
+// whoever may wait): without the seven of each step, the elastic plate's
+// solid alone (800 particles) runs 6 % faster. The solid allows the team at
+// any size: its particles cost more, and two threads paid at 1 100 particles
+// (the benchmark: 0.49 against 0.67 ms a step).
+inline bool on_team(bool use_team) {
+  return use_team && omp_get_max_threads() > 1;
 }
+inline bool threaded(std::size_t particles) {
+  return on_team(worth_threads(particles));
+}
+
+// For the solid's loops: the team at any size.
+inline constexpr bool kTeamAtAnySize = true;
 
 // The calling thread's share of [0, n) as OpenMP's schedule(static) gives it:
 // contiguous, the first n % T threads one index more.
@@ -47,12 +56,12 @@ inline std::pair<long, long> static_share(long n) {
 
 // body(i) for every i in [0, n), under a static schedule.
 template <class Body>
-void parallel_for(std::size_t n, Body&& body) {
+void parallel_for(std::size_t n, bool use_team, Body&& body) {
   const auto loop = [&body](long begin, long end) __attribute__((flatten)) {
     for (long i = begin; i < end; ++i) body(i);
   };
   const long count = static_cast<long>(n);
-  if (!threaded(n)) return loop(0, count);
+  if (!on_team(use_team)) return loop(0, count);
 #pragma omp parallel
   {
     const auto [begin, end] = static_share(count);
@@ -60,16 +69,21 @@ void parallel_for(std::size_t n, Body&& body) {
   }
 }
 
+template <class Body>
+void parallel_for(std::size_t n, Body&& body) {
+  parallel_for(n, worth_threads(n), std::forward<Body>(body));
+}
+
 // The largest value(i) over i in [0, n), and `none` if that is larger; value
 // may also update particle i (one pass instead of two).
 template <class Value>
-double parallel_max(std::size_t n, double none, Value&& value) {
+double parallel_max(std::size_t n, double none, bool use_team, Value&& value) {
   const auto loop = [&value](long begin, long end, double largest) __attribute__((flatten)) {
     for (long i = begin; i < end; ++i) largest = std::max(largest, value(i));
     return largest;
   };
   const long count = static_cast<long>(n);
-  if (!threaded(n)) return loop(0, count, none);
+  if (!on_team(use_team)) return loop(0, count, none);
   double largest = none;
 #pragma omp parallel reduction(max : largest)
   {
@@ -77,6 +91,11 @@ double parallel_max(std::size_t n, double none, Value&& value) {
     largest = loop(begin, end, largest);
   }
   return largest;
+}
+
+template <class Value>
+double parallel_max(std::size_t n, double none, Value&& value) {
+  return parallel_max(n, none, worth_threads(n), std::forward<Value>(value));
 }
 
 // The first i in [0, n) with found(i), as a serial scan finds it; n if none.
