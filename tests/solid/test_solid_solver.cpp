@@ -1,5 +1,6 @@
 // The solid solver alone: its neighbour passes on an analytic velocity field,
-// failure, the oscillating plate's period (short mode), and a runaway run.
+// failure, the oscillating plate's period (short mode), a result that does not
+// depend on the thread count, and a runaway run.
 #include <gtest/gtest.h>
 #include <omp.h>
 
