@@ -18,9 +18,6 @@
 #include "solid_parameters.hpp"
 #include "solid_solver.hpp"
 #include "sphcore/case_file.hpp"
-#include "sphcore/cell_grid.hpp"
-#include "sphcore/kernel.hpp"
-#include "sphcore/neighbour_list.hpp"
 #include "sphcore/solver_cli.hpp"
 
 namespace {
@@ -31,8 +28,8 @@ struct Measurement {
   long particles;
   int threads;
   double seconds_per_step;
-  // Pairs (i, j) within 2h summed over the particles the passes visit, at the
-  // end: the work of a step. Per particle it is lower for small scenes, where
+  // Pairs (i, j) within 2h summed over the particles the passes visit, in the
+  // last step: the work of a step. Per particle it is lower for small scenes, where
   // more of the particles lie near a surface or a wall.
   long pairs = 0;
   long sorts = 0;  // fluid: neighbour re-sorts during the timed steps
@@ -40,23 +37,9 @@ struct Measurement {
 
 // The pairs a fluid step visits: every water particle's neighbours within 2h.
 long fluid_pairs(const FluidSolver& solver) {
-  const cosph::fluid::FluidParticles& P = solver.particles();
-  const double support = sph::kernel::kSupport * solver.parameters().h;
-  sph::CellGrid grid;
-  grid.build(P.x, support);
-  // The grid's candidate ranges index the positions in its order.
-  std::vector<sph::Vec2> x(P.size());
-  std::vector<bool> water(P.size());
-  for (std::size_t k = 0; k < P.size(); ++k) {
-    const auto i = static_cast<std::size_t>(grid.order()[k]);
-    x[k] = P.x[i];
-    water[k] = P.is_water(i);
-  }
-  sph::CandidateList within;
-  within.build(grid, x, support, [&](long k) { return static_cast<bool>(water[k]); });
   long pairs = 0;
-  for (std::size_t k = 0; k < x.size(); ++k)
-    pairs += static_cast<long>(within.candidates(static_cast<long>(k)).size());
+  for (long i = 0; i < static_cast<long>(solver.particles().size()); ++i)
+    pairs += static_cast<long>(solver.pairs().neighbours(i).size());
   return pairs;
 }
 

@@ -63,6 +63,8 @@ class FluidSolver {
   long sorts() const { return sorts_; }
   const FluidParticles& particles() const { return particles_; }
   const FluidParameters& parameters() const { return parameters_; }
+  // The pairs within 2h of the last step, listed at its start.
+  const sph::NeighbourList& pairs() const { return pairs_; }
   WaterGauges gauges() const { return measure(particles_, parameters_); }
   sph::Snapshot snapshot() const;
 

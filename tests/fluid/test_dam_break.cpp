@@ -6,7 +6,6 @@
 // regenerate it that way only for a deliberate change of the physics, and say
 // so in the commit.
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -19,8 +18,8 @@
 #include "fluid_solver.hpp"
 #include "fluid_test_support.hpp"
 #include "sphcore/case_file.hpp"
-#include "sphcore/parallel.hpp"
 #include "test_support.hpp"
+#include "thread_count.hpp"
 
 namespace cosph::fluid {
 namespace {
@@ -119,11 +118,7 @@ TEST(DamBreak, ResultDoesNotDependOnTheThreadCount) {
   const sph::CaseFile case_file = sph::load_case(kCase, {"fluid.spacing=0.003"});
   const FluidParameters parameters = read_fluid_parameters(case_file);
   auto run = [&](int threads) {
-    omp_set_num_threads(threads);
-    FluidSolver solver(case_file, parameters);
-    EXPECT_EQ(sph::threaded(solver.particles().size()), threads > 1);
-    for (int step = 0; step < 100; ++step) solver.step(solver.step_limits().smallest());
-    return solver.particles();
+    return cosph::testing::particles_after_steps<FluidSolver>(case_file, parameters, threads, 100);
   };
   const FluidParticles one = run(1), two = run(2);
   ASSERT_EQ(one.size(), two.size());

@@ -2,7 +2,6 @@
 // failure, the oscillating plate's period (short mode), a result that does not
 // depend on the thread count, and a runaway run.
 #include <gtest/gtest.h>
-#include <omp.h>
 
 #include <sys/wait.h>
 #include <algorithm>
@@ -18,8 +17,8 @@
 #include "solid_dynamics.hpp"
 #include "solid_solver.hpp"
 #include "solid_test_cases.hpp"
-#include "sphcore/parallel.hpp"
 #include "sphcore/permutation.hpp"
+#include "thread_count.hpp"
 #include "von_mises_failure.hpp"
 
 namespace cosph::solid {
@@ -132,16 +131,10 @@ TEST(OscillatingPlate, CoarsePeriodNearThinPlateTheory) {
 TEST(SolidSolver, ResultDoesNotDependOnTheThreadCount) {
   const sph::CaseFile case_file = sph::load_case(plate_case_path(), {"solid.spacing=0.001"});
   const SolidParameters par = read_solid_parameters(case_file);
-  const int threads_before = omp_get_max_threads();
   auto run = [&](int threads) {
-    omp_set_num_threads(threads);
-    SolidSolver solver(case_file, par);
-    EXPECT_EQ(sph::threaded(solver.particles().size()), threads > 1);
-    for (int step = 0; step < 100; ++step) solver.step(solver.step_limits().smallest());
-    return solver.particles();
+    return cosph::testing::particles_after_steps<SolidSolver>(case_file, par, threads, 100);
   };
   const SolidParticles one = run(1), two = run(2);
-  omp_set_num_threads(threads_before);
   ASSERT_EQ(one.size(), two.size());
   for (std::size_t i = 0; i < one.size(); ++i) {
     ASSERT_EQ(one.x[i], two.x[i]) << "particle " << one.id[i];

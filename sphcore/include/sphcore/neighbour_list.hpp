@@ -56,32 +56,23 @@ class PerThreadLists {
   // store being the calling thread's; append adds i's entries at its end.
   template <class Append>
   void fill(std::size_t n, std::size_t entries_per_particle, Append&& append) {
-    const long count = static_cast<long>(n);
     first_.resize(n);
     count_.resize(n);
     owner_.resize(n);
     stores_.resize(static_cast<std::size_t>(omp_get_max_threads()));
-    // Run by each thread of the team, or alone (see threaded()): the loop
-    // below then binds to no team and covers all of [0, n).
-    auto fill_own_share = [&] {
-      Store& store = stores_[static_cast<std::size_t>(omp_get_thread_num())];
+    for_each_share(n, worth_threads(n), [&](long share_begin, long share_end) {
+      const int owner = omp_get_thread_num();
+      Store& store = stores_[static_cast<std::size_t>(owner)];
       store.reserve(entries_per_particle * (n / stores_.size() + 1));
       store.size = 0;
-#pragma omp for schedule(static)
-      for (long i = 0; i < count; ++i) {
+      for (long i = share_begin; i < share_end; ++i) {
         const std::size_t begin = store.size;
         append(i, store);
         first_[i] = begin;
         count_[i] = static_cast<int>(store.size - begin);
-        owner_[i] = omp_get_thread_num();
+        owner_[i] = owner;
       }
-    };
-    if (threaded(n)) {
-#pragma omp parallel
-      fill_own_share();
-    } else {
-      fill_own_share();
-    }
+    });
   }
 
   std::span<const int> j(long i) const {

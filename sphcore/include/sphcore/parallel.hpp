@@ -49,6 +49,19 @@ inline std::pair<long, long> static_share(long n) {
   return {begin, begin + share};
 }
 
+// range(begin, end) once for each thread's share of [0, n) under a static
+// schedule, or once for all of it when the loop runs alone.
+template <class Range>
+void for_each_share(std::size_t n, bool use_team, Range&& range) {
+  const long count = static_cast<long>(n);
+  if (!on_team(use_team)) return range(0L, count);
+#pragma omp parallel
+  {
+    const auto [begin, end] = static_share(count);
+    range(begin, end);
+  }
+}
+
 // The helpers below run `body` in one loop over a range, which both the plain
 // and the threaded path call, and flatten it: the body is inlined there, as
 // the compiler did into the loop of an omp for. Without flatten, the solid's
@@ -57,16 +70,10 @@ inline std::pair<long, long> static_share(long n) {
 // body(i) for every i in [0, n), under a static schedule.
 template <class Body>
 void parallel_for(std::size_t n, bool use_team, Body&& body) {
-  const auto loop = [&body](long begin, long end) __attribute__((flatten)) {
-    for (long i = begin; i < end; ++i) body(i);
-  };
-  const long count = static_cast<long>(n);
-  if (!on_team(use_team)) return loop(0, count);
-#pragma omp parallel
-  {
-    const auto [begin, end] = static_share(count);
-    loop(begin, end);
-  }
+  for_each_share(
+      n, use_team, [&body](long begin, long end) __attribute__((flatten)) {
+        for (long i = begin; i < end; ++i) body(i);
+      });
 }
 
 template <class Body>
