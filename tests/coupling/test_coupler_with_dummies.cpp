@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <memory>
 #include <sstream>
 
@@ -147,6 +148,9 @@ TEST_F(CouplerWithDummies, RunToTheEndWithTheSmallerStepAndBalancedForces) {
   const std::size_t last = timeseries.rows.size() - 1;
   EXPECT_EQ(timeseries.at(last, "fluid_steps"), timeseries.at(last, "solid_steps"));
   EXPECT_GT(timeseries.at(last, "solid_force_x"), 0.0);
+
+  // The coupler's socket file is not left behind.
+  EXPECT_FALSE(std::filesystem::exists(dir_.file("coupler.sock")));
 }
 
 // Multi-rate: the window is the larger proposal (the solid's 1.5 ms, within 4
@@ -211,6 +215,7 @@ TEST_F(CouplerWithDummies, ASolverThatDiesEndsTheRunWithItsReason) {
   EXPECT_TRUE(contains(solid->err(), "coupler: step")) << solid->err();
   EXPECT_TRUE(contains(solid->err(), "waiting for the fluid")) << solid->err();
   expect_all_gone({coupler.get(), fluid.get(), solid.get()});
+  EXPECT_FALSE(std::filesystem::exists(dir_.file("coupler.sock")));
 }
 
 TEST_F(CouplerWithDummies, ASolverThatHangsIsTimedOutAndStopsOnSigterm) {
