@@ -36,7 +36,9 @@ class BoundIpcFile {
   }
   void bound(std::string_view endpoint) {
     constexpr std::string_view kIpc = "ipc://";
-    if (endpoint.starts_with(kIpc)) path_ = endpoint.substr(kIpc.size());
+    if (!endpoint.starts_with(kIpc)) return;
+    endpoint.remove_prefix(kIpc.size());
+    if (!endpoint.starts_with('@')) path_ = endpoint;  // '@': Linux's abstract names, no file
   }
 
  private:
