@@ -16,6 +16,7 @@
 #include <vector>
 #include <zmq.hpp>
 
+#include "participant/bound_ipc_file.hpp"
 #include "participant/protocol.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/solver_cli.hpp"
@@ -40,11 +41,13 @@ sph::InterfaceParticles interface_of(int size) {
 
 // The coupler's side: answer every state with one acceleration per particle.
 void serve(const std::string& endpoint, int round_trips) {
+  cp::BoundIpcFile socket_file;
   zmq::context_t context;
   zmq::socket_t socket(context, zmq::socket_type::router);
   // Until the last answer is out: closing drops what is still queued.
   socket.set(zmq::sockopt::linger, static_cast<int>(kTimeout.count()));
   socket.bind(endpoint);
+  socket_file.bound(endpoint);
   for (std::size_t s = 0; s < kSizes.size(); ++s)
     for (int r = 0; r <= round_trips; ++r) {  // the first is a warm-up
       const std::optional<cp::Routed> message = cp::receive_routed(socket, kTimeout);

@@ -171,7 +171,9 @@ def diffusion_rows(out_root):
 
 def density_run(out_root, ratio, label, settings):
     """One run of the plate with rho_s = ratio rho_f to t = 0.1 s: its row and whether it ran."""
-    out = os.path.join(out_root, f"density_{ratio}" + ("" if settings else "_synchronised"))
+    # The multi-rate runs keep the folder names of earlier maps, for --reuse.
+    suffix = "" if label == "multi-rate" else f"_{label}"
+    out = os.path.join(out_root, f"density_{ratio}{suffix}")
     reached, dt, error, wall = launch("elastic_plate", out,
                                       settings + [f"solid.density={1000.0 * ratio}"], 0.1)
     row = [f"{ratio:g}", label, "runs to 0.1 s" if not error else

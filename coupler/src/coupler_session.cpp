@@ -3,11 +3,10 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
 #include <iostream>
-#include <string_view>
 
 #include "common_step.hpp"
+#include "participant/bound_ipc_file.hpp"
 #include "participant/protocol.hpp"
 #include "sphcore/run_control.hpp"
 #include "sphcore/timeseries_writer.hpp"
@@ -21,29 +20,6 @@ namespace {
 
 constexpr int kFluid = 0, kSolid = 1;
 const char* kSideName[2] = {"fluid", "solid"};
-
-// ZeroMQ removes the file of an ipc:// endpoint only when it chose the name
-// itself, so every run left its coupler.sock in the output folder. The file
-// is removed when the session ends, after its socket and context are closed.
-class BoundIpcFile {
- public:
-  BoundIpcFile() = default;
-  BoundIpcFile(const BoundIpcFile&) = delete;
-  BoundIpcFile& operator=(const BoundIpcFile&) = delete;
-  ~BoundIpcFile() {
-    std::error_code ignored;  // already gone, or never made: nothing to do
-    if (!path_.empty()) std::filesystem::remove(path_, ignored);
-  }
-  void bound(std::string_view endpoint) {
-    constexpr std::string_view kIpc = "ipc://";
-    if (!endpoint.starts_with(kIpc)) return;
-    endpoint.remove_prefix(kIpc.size());
-    if (!endpoint.starts_with('@')) path_ = endpoint;  // '@': Linux's abstract names, no file
-  }
-
- private:
-  std::filesystem::path path_;
-};
 
 struct Peer {
   std::string identity;
@@ -315,7 +291,7 @@ class Session {
 
   CouplerSettings settings_;
   std::chrono::milliseconds timeout_;
-  BoundIpcFile ipc_file_;  // before the context: destroyed after it
+  cp::BoundIpcFile ipc_file_;  // before the context: destroyed after it
   zmq::context_t context_{1};
   zmq::socket_t socket_{context_, zmq::socket_type::router};
   std::array<Peer, 2> peers_;

@@ -120,14 +120,8 @@ TEST(DamBreak, ResultDoesNotDependOnTheThreadCount) {
   auto run = [&](int threads) {
     return cosph::testing::particles_after_steps<FluidSolver>(case_file, parameters, threads, 100);
   };
-  const FluidParticles one = run(1), two = run(2);
-  ASSERT_EQ(one.size(), two.size());
-  for (std::size_t i = 0; i < one.size(); ++i) {
-    ASSERT_EQ(one.id[i], two.id[i]);
-    ASSERT_EQ(one.x[i], two.x[i]) << "particle " << one.id[i];
-    ASSERT_EQ(one.v[i], two.v[i]) << "particle " << one.id[i];
-    ASSERT_EQ(one.rho[i], two.rho[i]) << "particle " << one.id[i];
-  }
+  cosph::testing::expect_same_particles(run(1), run(2), &FluidParticles::id, &FluidParticles::x,
+                                        &FluidParticles::v, &FluidParticles::rho);
 }
 
 }  // namespace

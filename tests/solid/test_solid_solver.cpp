@@ -135,13 +135,8 @@ TEST(SolidSolver, ResultDoesNotDependOnTheThreadCount) {
     return cosph::testing::particles_after_steps<SolidSolver>(case_file, par, threads, 100);
   };
   const SolidParticles one = run(1), two = run(2);
-  ASSERT_EQ(one.size(), two.size());
-  for (std::size_t i = 0; i < one.size(); ++i) {
-    ASSERT_EQ(one.x[i], two.x[i]) << "particle " << one.id[i];
-    ASSERT_EQ(one.v[i], two.v[i]) << "particle " << one.id[i];
-    ASSERT_EQ(one.rho[i], two.rho[i]) << "particle " << one.id[i];
-    ASSERT_EQ(one.s[i], two.s[i]) << "particle " << one.id[i];
-  }
+  cosph::testing::expect_same_particles(one, two, &SolidParticles::x, &SolidParticles::v,
+                                        &SolidParticles::rho, &SolidParticles::s);
   EXPECT_TRUE(std::any_of(one.v.begin(), one.v.end(),
                           [](const Vec2& v) { return v.norm() > 0.1; }));  // it swings
 }
