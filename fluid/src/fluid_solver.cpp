@@ -20,7 +20,8 @@ FluidSolver::FluidSolver(const sph::CaseFile& case_file, const FluidParameters& 
       skin_(sph::kSkinOverH * parameters.h) {
   find_neighbours(true);
   compute_continuity_and_gradients(particles_, pairs_, parameters_);  // only for grad_rho
-  update_pressure_and_accelerations();
+  update_pressure();
+  compute_forces();
 }
 
 void FluidSolver::find_neighbours(bool sort) {
@@ -39,13 +40,16 @@ void FluidSolver::find_neighbours(bool sort) {
   pairs_.build(candidates_, P.x, parameters_.h);
 }
 
-void FluidSolver::update_pressure_and_accelerations() {
+void FluidSolver::update_pressure() {
   FluidParticles& P = particles_;
   sph::parallel_for(P.size(), [&](long i) {
     if (P.is_water(i)) P.p[i] = eos_.pressure(P.rho[i]);
   });
-  compute_wall_pressure(P, grid_, parameters_, eos_);
-  compute_accelerations(P, pairs_, parameters_);
+}
+
+void FluidSolver::compute_forces() {
+  compute_wall_pressure(particles_, grid_, parameters_, eos_);
+  compute_accelerations(particles_, pairs_, parameters_);
 }
 
 sph::StepLimits FluidSolver::step_limits() const {
@@ -59,6 +63,11 @@ sph::StepLimits FluidSolver::step_limits() const {
 }
 
 void FluidSolver::begin_step(double dt) {
+  advance_state(dt);
+  compute_forces();
+}
+
+void FluidSolver::advance_state(double dt) {
   FluidParticles& P = particles_;
   const double half = 0.5 * dt;
   // The largest squared displacement since the last sort.
@@ -74,7 +83,7 @@ void FluidSolver::begin_step(double dt) {
   sph::parallel_for(P.size(), [&](long i) {
     if (P.is_water(i)) P.rho[i] += dt * P.drho[i];
   });
-  update_pressure_and_accelerations();
+  update_pressure();
   check_state();  // before the state is shown to anyone, the coupler included
 }
 

@@ -42,7 +42,12 @@ class FluidSolver {
   // begin_step kicks, drifts and evaluates the water's own forces at the new
   // positions; then the coupler gets the interface and answers with the
   // cross-phase accelerations (set_interface_accelerations); end_step kicks.
+  // begin_step is advance_state (kick, drift, density, pressure: all the
+  // interface carries) and then compute_forces, so that a coupled run can
+  // send the interface between the two (participant/coupled_run.hpp).
   void begin_step(double dt);
+  void advance_state(double dt);
+  void compute_forces();  // the wall pressure and the water's own accelerations
   void end_step(double dt);
 
   // The water particles inside `region`, as the coupler needs them.
@@ -72,7 +77,7 @@ class FluidSolver {
   // Lists this step's pairs from the Verlet list, first re-sorting the
   // particles and rebuilding that list if it may have missed one.
   void find_neighbours(bool sort);
-  void update_pressure_and_accelerations();
+  void update_pressure();
   void check_state() const;
   // Why particle i's state is not physical, or nullptr if it is (or is a wall).
   const char* runaway_reason(std::size_t i) const;

@@ -12,7 +12,7 @@ struct Participant::Impl {
   zmq::socket_t socket{context, zmq::socket_type::dealer};
   std::chrono::milliseconds timeout;
   std::string endpoint;
-  std::size_t sent = 0;
+  std::size_t sent = 0;  // particles in the last state: the answer has one entry for each
 
   Envelope await(const char* expected) {
     auto reply = receive(socket, timeout, "the coupler");
@@ -62,10 +62,9 @@ sph::Region Participant::connect(PhaseKind phase, const std::string& solver_name
   return from_proto(welcome.welcome().send_region());
 }
 
-StepReply Participant::exchange(long step, double time, double proposed_dt,
-                                const sph::Region& bounds, double max_smoothing_length,
-                                const sph::InterfaceParticles& particles,
-                                const std::vector<sph::Gauge>& gauges) {
+void Participant::send_state(long step, double time, double proposed_dt, const sph::Region& bounds,
+                             double max_smoothing_length, const sph::InterfaceParticles& particles,
+                             const std::vector<sph::Gauge>& gauges) {
   Envelope message;
   InterfaceState& state = *message.mutable_state();
   state.set_step(static_cast<std::uint64_t>(step));
@@ -81,19 +80,22 @@ StepReply Participant::exchange(long step, double time, double proposed_dt,
     g.set_value(gauge.value);
   }
   send(impl_->socket, message);
+  impl_->sent = particles.size();
+}
 
+StepReply Participant::await_step() {
+  const std::size_t sent = impl_->sent;
   const Envelope reply = impl_->await("the common step");
   if (!reply.has_step()) throw CouplingError("the coupler answered a step with the wrong message");
   const CouplingStep& s = reply.step();
-  if (!s.stop() && s.acceleration_size() != 2 * static_cast<int>(particles.size()))
+  if (!s.stop() && s.acceleration_size() != 2 * static_cast<int>(sent))
     throw CouplingError("the coupler sent " + std::to_string(s.acceleration_size() / 2) +
-                        " accelerations for " + std::to_string(particles.size()) + " particles");
-  if (!s.stop() && s.density_rate_size() != 0 &&
-      s.density_rate_size() != static_cast<int>(particles.size()))
+                        " accelerations for " + std::to_string(sent) + " particles");
+  if (!s.stop() && s.density_rate_size() != 0 && s.density_rate_size() != static_cast<int>(sent))
     throw CouplingError("the coupler sent " + std::to_string(s.density_rate_size()) +
-                        " density rates for " + std::to_string(particles.size()) + " particles");
+                        " density rates for " + std::to_string(sent) + " particles");
   StepReply out{s.dt(), {}, {}, from_proto(s.send_region()), s.stop(), s.whole_step()};
-  out.acceleration.reserve(particles.size());
+  out.acceleration.reserve(sent);
   for (int k = 0; k + 1 < s.acceleration_size(); k += 2)
     out.acceleration.emplace_back(s.acceleration(k), s.acceleration(k + 1));
   out.density_rate.assign(s.density_rate().begin(), s.density_rate().end());

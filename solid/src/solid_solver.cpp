@@ -88,6 +88,11 @@ sph::StepLimits SolidSolver::step_limits() const {
 }
 
 void SolidSolver::begin_step(double dt) {
+  advance_state(dt);
+  compute_forces();
+}
+
+void SolidSolver::advance_state(double dt) {
   SolidParticles& P = particles_;
   const double half = 0.5 * dt;
   // The largest squared displacement since the last sort.
@@ -106,8 +111,11 @@ void SolidSolver::begin_step(double dt) {
     P.s[i] += dt * P.ds[i];
   });
   update_stress(Including::active_only);
-  compute_accelerations(P, parameters_);
   check_state();  // before the state is shown to anyone, the coupler included
+}
+
+void SolidSolver::compute_forces() {
+  compute_accelerations(particles_, parameters_);
 }
 
 void SolidSolver::end_step(double dt) {

@@ -47,8 +47,12 @@ class SolidSolver {
   // A coupled step is split where the coupler's answer is needed (as in
   // FluidSolver): begin_step kicks, drifts and evaluates the solid's own
   // forces; the coupler's cross-phase accelerations arrive through
-  // set_interface_accelerations; end_step kicks.
+  // set_interface_accelerations; end_step kicks. begin_step is advance_state
+  // (kick, drift, density, stress: all the interface carries) and then
+  // compute_forces, so that a coupled run can send the interface between them.
   void begin_step(double dt);
+  void advance_state(double dt);
+  void compute_forces();  // the solid's own accelerations
   void end_step(double dt);
 
   // The solid particles inside `region` (clamped ones too: water presses on them).

@@ -3,7 +3,12 @@
 //
 // Per step: begin_step(dt) (kick, drift, own forces), one exchange with the
 // coupler (interface out; cross-phase accelerations and density rates, the
-// next dt and the stop flag in), end_step(dt) (kick). In a multi-rate run the
+// next dt and the stop flag in), end_step(dt) (kick). A solver that splits
+// begin_step where its state is complete (advance_state: kick, drift,
+// density, stress) and its own forces begin (compute_forces) sends its
+// interface between the two halves, and computes its forces while the coupler
+// computes the cross-phase terms: the messages and the coupler's work then
+// cost a synchronised step almost nothing. In a multi-rate run the
 // coupler's step is a window that the solver covers in as many sub-steps as
 // its own stability needs, the cross-phase terms held over it, and exchanges
 // once, at the window's end. The coupler writes timeseries.csv from the
@@ -12,7 +17,7 @@
 // Solver needs: begin_step, end_step, step_limits, collect_interface,
 // set_interface_accelerations, interaction_bounds, max_smoothing_length,
 // gauge_values, time, steps, snapshot, particles().size(); optionally
-// set_interface_density_rates.
+// set_interface_density_rates, and advance_state with compute_forces.
 #pragma once
 
 #include <algorithm>
@@ -44,6 +49,13 @@ inline int substeps_for(double window, double proposed_dt) {
   const double ratio = window / proposed_dt;
   return ratio <= 1.0 ? 1 : static_cast<int>(std::ceil(ratio * (1.0 - 1e-12)));
 }
+
+// A solver whose step splits where its interface state is complete.
+template <class Solver>
+concept SplitsItsStep = requires(Solver& solver, double dt) {
+  solver.advance_state(dt);
+  solver.compute_forces();
+};
 
 template <class Solver>
 class CoupledRun {
@@ -94,9 +106,10 @@ class CoupledRun {
       const int substeps = reply.whole_step ? 1 : substeps_for(reply.dt, proposed_dt_);
       const double dt = reply.dt / substeps;
       for (int k = 1; k <= substeps; ++k) {
-        solver_.begin_step(dt);
-        // The interface has moved to t + dt: label it so (end_step advances time() only later).
-        if (k == substeps) reply = exchange(reply.send_region, solver_.time() + dt, ++windows_);
+        if (k < substeps)
+          solver_.begin_step(dt);
+        else
+          reply = begin_step_with_exchange(dt, reply.send_region);
         solver_.end_step(dt);
       }
       progress.report(solver_.time(), solver_.steps(), dt);
@@ -105,12 +118,37 @@ class CoupledRun {
     return 0;
   }
 
+  // The window's last step, with its exchange. The interface has moved to
+  // t + dt: it is labelled so (end_step advances time() only later).
+  StepReply begin_step_with_exchange(double dt, const sph::Region& region) {
+    if constexpr (SplitsItsStep<Solver>) {
+      solver_.advance_state(dt);
+      // The step proposed bounds the force term with the accelerations of the
+      // solver's previous force pass: this one's are not known yet. The
+      // sound-speed term, which sets the step in the scenes here, is exact.
+      send_state(region, solver_.time() + dt, ++windows_);
+      solver_.compute_forces();
+    } else {
+      solver_.begin_step(dt);
+      send_state(region, solver_.time() + dt, ++windows_);
+    }
+    return await_step();
+  }
+
   StepReply exchange(const sph::Region& region, double time, long step) {
+    send_state(region, time, step);
+    return await_step();
+  }
+
+  void send_state(const sph::Region& region, double time, long step) {
     solver_.collect_interface(region, interface_);
     proposed_dt_ = solver_.step_limits().smallest();
-    StepReply reply =
-        participant_.exchange(step, time, proposed_dt_, solver_.interaction_bounds(),
-                              solver_.max_smoothing_length(), interface_, solver_.gauge_values());
+    participant_.send_state(step, time, proposed_dt_, solver_.interaction_bounds(),
+                            solver_.max_smoothing_length(), interface_, solver_.gauge_values());
+  }
+
+  StepReply await_step() {
+    StepReply reply = participant_.await_step();
     solver_.set_interface_accelerations(reply.acceleration);
     // Only a solver with a use for the other phase's share in its continuity
     // (the fluid) takes it; a solid model need not know of it.

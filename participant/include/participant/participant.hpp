@@ -37,9 +37,12 @@ class Participant {
   sph::Region connect(PhaseKind phase, const std::string& solver_name, std::size_t particle_count,
                       double max_smoothing_length, const sph::Region& bounds);
 
-  StepReply exchange(long step, double time, double proposed_dt, const sph::Region& bounds,
-                     double max_smoothing_length, const sph::InterfaceParticles& particles,
-                     const std::vector<sph::Gauge>& gauges);
+  // One step's exchange, in two halves so that a solver can work between
+  // them: its interface state out, then the coupler's answer for it in.
+  void send_state(long step, double time, double proposed_dt, const sph::Region& bounds,
+                  double max_smoothing_length, const sph::InterfaceParticles& particles,
+                  const std::vector<sph::Gauge>& gauges);
+  StepReply await_step();
 
   // Best effort: tells the coupler why this solver stops, so the others stop too.
   void report_error(const std::string& message) noexcept;

@@ -1,0 +1,172 @@
+// A solver's coupled loop (participant/coupled_run.hpp) against a coupler that
+// the test plays on a thread of its own: which state goes out, and when.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+#include <atomic>
+#include <chrono>
+#include <filesystem>
+#include <future>
+#include <limits>
+#include <thread>
+#include <zmq.hpp>
+
+#include "participant/bound_ipc_file.hpp"
+#include "participant/coupled_run.hpp"
+#include "participant/protocol.hpp"
+#include "sphcore/time_step.hpp"
+
+namespace {
+
+namespace cp = cosph::coupling;
+using sph::Mat2;
+using sph::Vec2;
+
+constexpr double kDt = 1e-3;    // s, every step
+constexpr double kSpeed = 2.0;  // m/s, of the solver's one particle
+constexpr long kWindows = 5;    // exchanges after the first
+
+// What the coupler saw, for the test to check afterwards.
+struct CouplerLog {
+  std::atomic<long> states{0};  // received so far, the first (before any step) included
+  std::vector<double> time, x;  // of each state, and of its particle
+};
+
+// One particle moving at kSpeed. With kSplits, it splits its step as the
+// cosph solvers do, and its force pass waits (at most two seconds) for the
+// coupler to hold this step's state; without, it only looks. It counts the
+// passes that found the state not yet out.
+template <bool kSplits>
+class MovingParticle {
+ public:
+  explicit MovingParticle(const CouplerLog& coupler) : coupler_(coupler) {}
+
+  void begin_step(double dt) {
+    advance(dt);
+    force_pass();
+  }
+  void advance_state(double dt) requires kSplits { advance(dt); }
+  void compute_forces() requires kSplits { force_pass(); }
+  void end_step(double dt) {
+    time_ += dt;
+    ++steps_;
+  }
+
+  sph::StepLimits step_limits() const {
+    const double inf = std::numeric_limits<double>::infinity();
+    return {kDt, inf, inf};
+  }
+  void collect_interface(const sph::Region&, sph::InterfaceParticles& out) const {
+    out.clear();
+    out.add(0, x_, Vec2(kSpeed, 0.0), Mat2::Zero(), 1.0, 1000.0, 1e-3, 10.0);
+  }
+  void set_interface_accelerations(const std::vector<Vec2>&) {}
+  sph::Region interaction_bounds() const { return sph::bounds_of(std::vector<Vec2>{x_}); }
+  double max_smoothing_length() const { return 1e-3; }
+  std::vector<sph::Gauge> gauge_values() const { return {}; }
+  double time() const { return time_; }
+  long steps() const { return steps_; }
+  sph::Snapshot snapshot() const { return sph::Snapshot(std::vector<Vec2>{x_}); }
+  std::vector<Vec2> particles() const { return {x_}; }
+
+  long force_passes_before_the_state_was_out() const { return late_; }
+
+ private:
+  void advance(double dt) { x_.x() += kSpeed * dt; }
+  void force_pass() {
+    const long wanted = steps_ + 2;  // the first state, and this step's
+    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(kSplits ? 2 : 0);
+    while (coupler_.states.load() < wanted && std::chrono::steady_clock::now() < give_up)
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    if (coupler_.states.load() < wanted) ++late_;
+  }
+
+  const CouplerLog& coupler_;
+  Vec2 x_ = Vec2::Zero();
+  double time_ = 0.0;
+  long steps_ = 0;
+  long late_ = 0;
+};
+
+// Answers every state with the step kDt, until kWindows exchanges are done.
+void play_coupler(zmq::socket_t& socket, CouplerLog& log) {
+  const std::chrono::milliseconds timeout(10000);
+  const auto hello = cp::receive_routed(socket, timeout);
+  ASSERT_TRUE(hello && hello->envelope.has_hello());
+  cp::Envelope welcome;
+  *welcome.mutable_welcome()->mutable_send_region() =
+      cp::to_proto(sph::Region{Vec2(-1e3, -1e3), Vec2(1e3, 1e3)});
+  welcome.mutable_welcome()->set_protocol_version(cp::kProtocolVersion);
+  cp::send_to(socket, hello->identity, welcome);
+  for (long window = 0; window <= kWindows; ++window) {
+    const auto message = cp::receive_routed(socket, timeout);
+    ASSERT_TRUE(message && message->envelope.has_state()) << "window " << window;
+    const cp::InterfaceState& state = message->envelope.state();
+    log.time.push_back(state.time());
+    log.x.push_back(state.position(0));
+    log.states.fetch_add(1);
+    cp::Envelope reply;
+    cp::CouplingStep& step = *reply.mutable_step();
+    step.set_dt(kDt);
+    step.add_acceleration(0.0);
+    step.add_acceleration(0.0);
+    *step.mutable_send_region() = welcome.welcome().send_region();
+    step.set_stop(window == kWindows);
+    cp::send_to(socket, message->identity, reply);
+  }
+}
+
+template <class Solver>
+void run_against_the_coupler(Solver& solver, CouplerLog& log) {
+  const std::filesystem::path out =
+      std::filesystem::temp_directory_path() / ("cosph_coupled_run_" + std::to_string(getpid()));
+  std::filesystem::create_directories(out);
+  const std::string endpoint = "ipc://" + (out / "coupler.sock").string();
+  {
+    cp::BoundIpcFile socket_file;
+    zmq::context_t context;
+    zmq::socket_t socket(context, zmq::socket_type::router);
+    socket.set(zmq::sockopt::linger, 1000);
+    socket.bind(endpoint);
+    socket_file.bound(endpoint);
+    auto coupler = std::async(std::launch::async, [&] { play_coupler(socket, log); });
+    const sph::RunParameters run{1.0, 1.0, 1.0, 0.25, Vec2::Zero(), 1};
+    cp::CoupledRun<Solver> coupled(
+        solver, run, {out.string(), "particle", cp::PhaseKind::solid, "test", endpoint, 10.0});
+    EXPECT_EQ(coupled.run(), 0);
+    coupler.get();
+  }
+  std::filesystem::remove_all(out);
+}
+
+// The state each exchange carries is the one at the end of the step: time and
+// position advanced, with the own forces or without them.
+void expect_advanced_states(const CouplerLog& log) {
+  ASSERT_EQ(log.time.size(), static_cast<std::size_t>(kWindows + 1));
+  for (std::size_t n = 0; n < log.time.size(); ++n) {
+    const double steps = static_cast<double>(n);
+    EXPECT_NEAR(log.time[n], steps * kDt, 1e-15) << "state " << n;
+    EXPECT_NEAR(log.x[n], steps * kSpeed * kDt, 1e-15) << "state " << n;
+  }
+}
+
+TEST(CoupledRun, ASolverThatSplitsItsStepSendsItsStateBeforeItsForcePass) {
+  CouplerLog log;
+  MovingParticle<true> solver(log);
+  run_against_the_coupler(solver, log);
+  expect_advanced_states(log);
+  // Sent only after the force pass, every state would arrive too late.
+  EXPECT_EQ(solver.force_passes_before_the_state_was_out(), 0);
+  EXPECT_EQ(solver.steps(), kWindows);
+}
+
+TEST(CoupledRun, ASolverThatDoesNotSplitItsStepSendsItAfterTheWholeBeginStep) {
+  static_assert(!cp::SplitsItsStep<MovingParticle<false>>);
+  CouplerLog log;
+  MovingParticle<false> solver(log);
+  run_against_the_coupler(solver, log);
+  expect_advanced_states(log);
+  EXPECT_EQ(solver.force_passes_before_the_state_was_out(), kWindows);
+}
+
+}  // namespace
