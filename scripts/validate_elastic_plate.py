@@ -96,14 +96,22 @@ def run_or_reuse(suffix, settings, reuse):
 
 def coupling_cost(out):
     """Steps, the coupler's wall clock, the share of it in messaging and pair
-    forces, that time per step (s), and the largest force imbalance."""
+    forces, that time per step (s), the coupling's share of the step, and the
+    largest force imbalance.
+
+    The coupling's share of the step is what the coupling adds to the run: the
+    solver that sets the pace (the one that waits least) waits for the
+    coupler's answers after its own work on each step that long. The coupler's
+    own work runs while the solvers compute their forces, so it is not the
+    same thing."""
     coupling = cr.read_csv(os.path.join(out, "coupling.csv"))
     own = coupling["messaging"][-1] + coupling["pair_forces"][-1]
     total = own + coupling["waiting"][-1]
+    exposed = min(coupling["fluid_waiting"][-1], coupling["solid_waiting"][-1])
     imbalance = float(np.max(np.abs(coupling["force_on_fluid_x"] + coupling["force_on_solid_x"])))
     steps = int(coupling["step"][-1])
     return (steps, float(total), float(own / max(total, 1e-30)), float(own / max(steps, 1)),
-            imbalance)
+            float(exposed / max(total, 1e-30)), imbalance)
 
 
 def main():
@@ -138,7 +146,7 @@ def main():
             errors.append(error)
             axes[k].plot(t, 1e3 * series[f"tip_d{axis}"], f"C{n}", lw=2 if n == 0 else 1.3,
                          label=f"cosph, {label}: RMS {1e3 * error:.1f} mm")
-        steps, coupler_clock, share, own_per_step, imbalance = coupling_cost(out)
+        steps, coupler_clock, share, own_per_step, exposed, imbalance = coupling_cost(out)
         wall = wall if wall is not None else coupler_clock
         if reached >= 0.399:
             points.append({"series": "elastic plate, " + ("synchronised" if suffix == "sync" else
@@ -148,11 +156,12 @@ def main():
                            "error_name": "tip x RMS (mm)"})
         rows.append([f"cosph, {label}", f"{1e3 * errors[0]:.1f}", f"{1e3 * errors[1]:.1f}",
                      f"{reached:.3f}" + ("" if reached >= 0.399 else f" ({reached_points} points in x)"),
-                     f"{wall:.0f} s", f"{steps}", f"{100 * share:.0f} %",
-                     f"{1e3 * own_per_step:.3f}"])
+                     f"{wall:.0f} s", f"{steps}", f"{100 * exposed:.0f} %",
+                     f"{100 * share:.0f} %", f"{1e3 * own_per_step:.3f}"])
         if suffix in SPEED_TARGETS:
             targets.append(f"{label}: {wall:.0f} s against {SPEED_TARGETS[suffix]} s, the "
-                           f"coupler's own share {100 * share:.0f} % against at most 15 %")
+                           f"coupling's share of the step {100 * exposed:.0f} % against at most "
+                           f"15 % (the coupler's own share {100 * share:.0f} %)")
         if reached < 0.399:
             notes.append(f"**{label} stopped at t = {reached:.3f} s:** "
                          f"{failure.splitlines()[0] if failure else '(no message)'}")
@@ -170,7 +179,7 @@ def main():
             axes[k].plot(ref["t_s"], 1e3 * ref[f"d{axis}_m"], style, color="0.45", lw=1.2,
                          label=f"{label}: RMS {1e3 * errors[-1]:.1f} mm")
         rows.append([label, f"{1e3 * errors[0]:.1f}", f"{1e3 * errors[1]:.1f}", "0.400", "", "", "",
-                     ""])
+                     "", ""])
     for k, axis in enumerate("xy"):
         axes[k].set(xlabel="t (s)", ylabel=f"free-end displacement d{axis} (mm)", xlim=(0, 0.4),
                     title=f"Plate tip, {axis}")
@@ -191,13 +200,18 @@ def main():
     cr.write_table(
         "elastic_plate",
         ["run", "tip x RMS (mm)", "tip y RMS (mm)", "reached t (s)", "wall time (2 cores)",
-         "coupling steps", "coupler's own share", "coupler's own time per step (ms)"],
+         "coupling steps", "coupling's share of the step", "coupler's own share",
+         "coupler's own time per step (ms)"],
         rows,
         preamble="Free-end displacement against Antoci et al. 2007, RMS over the experimental "
                  f"points ({len(experiment['x']['t_s'])} in x, {len(experiment['y']['t_s'])} in y, "
                  f"t <= {experiment['x']['t_s'][-1]:.2f} s), by `scripts/validate_elastic_plate.py`: "
-                 "water 2 mm, plate 1 mm unless the row says otherwise. The coupler's own share is the part of its time spent "
-                 "on messaging and pair forces; the rest it waits for the solvers.\n\n"
+                 "water 2 mm, plate 1 mm unless the row says otherwise. The coupling's share of the "
+                 "step is the part of the run that the solver setting the pace (the one that waits "
+                 "least) spends waiting for the coupler's answers after its own work on a step. "
+                 "The coupler's own share is the part of its time spent on messaging and pair "
+                 "forces, the rest it waits for the solvers: that work runs while the solvers "
+                 "compute their own forces.\n\n"
                  "Speed targets of issue 6 (0.4 s on two cores): "
                  + ("; ".join(targets) if targets else "not run") + ".\n\n"
                  + "\n".join(f"- {note}" for note in notes))

@@ -236,7 +236,7 @@ class Session {
     if (row.size() != timeseries_->column_count())
       fail("a solver changed the set of gauges it sends during the run");
     timeseries_->write_row(row);
-    const std::array<double, 13> coupling{t,
+    const std::array<double, 15> coupling{t,
                                           forces.force_on_fluid.x(),
                                           forces.force_on_fluid.y(),
                                           forces.force_on_solid.x(),
@@ -248,7 +248,9 @@ class Session {
                                           wait_seconds_,
                                           messaging_seconds_,
                                           pair_seconds_,
-                                          dt};
+                                          dt,
+                                          peers_[kFluid].state.waiting(),
+                                          peers_[kSolid].state.waiting()};
     coupling_->write_row(coupling);
   }
 
@@ -286,7 +288,9 @@ class Session {
                                                {"waiting", "s"},
                                                {"messaging", "s"},
                                                {"pair_forces", "s"},
-                                               {"dt", "s"}});
+                                               {"dt", "s"},
+                                               {"fluid_waiting", "s"},
+                                               {"solid_waiting", "s"}});
   }
 
   CouplerSettings settings_;

@@ -1,6 +1,7 @@
 #include "participant/participant.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <zmq.hpp>
 
 #include "participant/protocol.hpp"
@@ -13,6 +14,7 @@ struct Participant::Impl {
   std::chrono::milliseconds timeout;
   std::string endpoint;
   std::size_t sent = 0;  // particles in the last state: the answer has one entry for each
+  double waited = 0.0;   // s, in await_step, sent with every state
 
   Envelope await(const char* expected) {
     auto reply = receive(socket, timeout, "the coupler");
@@ -79,13 +81,16 @@ void Participant::send_state(long step, double time, double proposed_dt, const s
     g.set_unit(gauge.unit);
     g.set_value(gauge.value);
   }
+  state.set_waiting(impl_->waited);
   send(impl_->socket, message);
   impl_->sent = particles.size();
 }
 
 StepReply Participant::await_step() {
   const std::size_t sent = impl_->sent;
+  const auto start = std::chrono::steady_clock::now();
   const Envelope reply = impl_->await("the common step");
+  impl_->waited += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!reply.has_step()) throw CouplingError("the coupler answered a step with the wrong message");
   const CouplingStep& s = reply.step();
   if (!s.stop() && s.acceleration_size() != 2 * static_cast<int>(sent))

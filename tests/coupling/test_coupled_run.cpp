@@ -22,14 +22,16 @@ namespace cp = cosph::coupling;
 using sph::Mat2;
 using sph::Vec2;
 
-constexpr double kDt = 1e-3;    // s, every step
-constexpr double kSpeed = 2.0;  // m/s, of the solver's one particle
-constexpr long kWindows = 5;    // exchanges after the first
+constexpr double kDt = 1e-3;                           // s, every step
+constexpr double kSpeed = 2.0;                         // m/s, of the solver's one particle
+constexpr long kWindows = 5;                           // exchanges after the first
+constexpr std::chrono::milliseconds kAnswerDelay{20};  // the coupler's "work" per step
 
 // What the coupler saw, for the test to check afterwards.
 struct CouplerLog {
   std::atomic<long> states{0};  // received so far, the first (before any step) included
   std::vector<double> time, x;  // of each state, and of its particle
+  std::vector<double> waiting;  // s, the solver's wait for answers, as each state reports it
 };
 
 // One particle moving at kSpeed. With kSplits, it splits its step as the
@@ -88,7 +90,8 @@ class MovingParticle {
   long late_ = 0;
 };
 
-// Answers every state with the step kDt, until kWindows exchanges are done.
+// Answers every state with the step kDt, kAnswerDelay after it arrives,
+// until kWindows exchanges are done.
 void play_coupler(zmq::socket_t& socket, CouplerLog& log) {
   const std::chrono::milliseconds timeout(10000);
   const auto hello = cp::receive_routed(socket, timeout);
@@ -104,7 +107,9 @@ void play_coupler(zmq::socket_t& socket, CouplerLog& log) {
     const cp::InterfaceState& state = message->envelope.state();
     log.time.push_back(state.time());
     log.x.push_back(state.position(0));
+    log.waiting.push_back(state.waiting());
     log.states.fetch_add(1);
+    std::this_thread::sleep_for(kAnswerDelay);
     cp::Envelope reply;
     cp::CouplingStep& step = *reply.mutable_step();
     step.set_dt(kDt);
@@ -167,6 +172,20 @@ TEST(CoupledRun, ASolverThatDoesNotSplitItsStepSendsItAfterTheWholeBeginStep) {
   run_against_the_coupler(solver, log);
   expect_advanced_states(log);
   EXPECT_EQ(solver.force_passes_before_the_state_was_out(), kWindows);
+}
+
+// Each state reports how long the solver has waited for answers so far: at
+// least the coupler's delay for every answer before it (a solver that splits
+// its step hides part of that delay behind its force pass).
+TEST(CoupledRun, EachStateReportsTheSolversWaitForTheAnswersSoFar) {
+  CouplerLog log;
+  MovingParticle<false> solver(log);
+  run_against_the_coupler(solver, log);
+  ASSERT_EQ(log.waiting.size(), static_cast<std::size_t>(kWindows + 1));
+  EXPECT_EQ(log.waiting[0], 0.0);
+  const double delay = std::chrono::duration<double>(kAnswerDelay).count();
+  for (std::size_t n = 1; n < log.waiting.size(); ++n)
+    EXPECT_GE(log.waiting[n], static_cast<double>(n) * delay) << "state " << n;
 }
 
 }  // namespace

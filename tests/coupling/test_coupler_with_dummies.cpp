@@ -140,6 +140,12 @@ TEST_F(CouplerWithDummies, RunToTheEndWithTheSmallerStepAndBalancedForces) {
                 1e-8 * std::abs(fx));
     EXPECT_GT(coupling.at(r, "pairs"), 0.0) << "row " << r;
   }
+  // Each solver's wait for the coupler's answers, as it reported it, grows.
+  for (const char* waiting : {"fluid_waiting", "solid_waiting"}) {
+    for (std::size_t r = 1; r < coupling.rows.size(); ++r)
+      EXPECT_GE(coupling.at(r, waiting), coupling.at(r - 1, waiting)) << waiting << ", row " << r;
+    EXPECT_GT(coupling.at(coupling.rows.size() - 1, waiting), 0.0) << waiting;
+  }
 
   const Table timeseries(out("timeseries.csv"));
   for (const char* gauge : {"fluid_force_x", "fluid_steps", "solid_force_x", "solid_steps"})
