@@ -1,5 +1,6 @@
 #include "coupler_session.hpp"
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -56,18 +57,26 @@ class Session {
   }
 
  private:
-  // Tells every known peer why the run stops, then throws.
-  [[noreturn]] void fail(const std::string& message) {
+  // Tells every known peer why the run stops, except one that stopped first
+  // (`stopped`: it is gone or going), then throws.
+  [[noreturn]] void fail(const std::string& message, int stopped = -1) {
     cp::Envelope error;
     error.mutable_error()->set_message(message);
-    for (const Peer& peer : peers_)
-      if (!peer.identity.empty()) {
+    // A message queued for a peer that exits holds the coupler's own exit for
+    // the whole linger: the launcher, which stops every process 5 s after one
+    // fails, then had to kill it. The peers that still run get the error
+    // within a second, or are stopped by the launcher anyway.
+    socket_.set(zmq::sockopt::linger, static_cast<int>(std::min<long>(timeout_.count(), 1000)));
+    for (int side : {kFluid, kSolid}) {
+      const Peer& peer = peers_[side];
+      if (!peer.identity.empty() && side != stopped) {
         try {
           cp::send_to(socket_, peer.identity, error);
         } catch (const zmq::error_t&) {
           // that peer is gone already
         }
       }
+    }
     throw cp::CouplingError(message);
   }
 
@@ -88,7 +97,7 @@ class Session {
     if (message->envelope.has_error()) {
       const int side = side_of(message->identity);
       const std::string who = side >= 0 ? kSideName[side] : "a peer";
-      fail(who + " stopped: " + message->envelope.error().message());
+      fail(who + " stopped: " + message->envelope.error().message(), side);
     }
     return *message;
   }
