@@ -179,6 +179,7 @@ class Session {
       peer.bounds = cp::from_proto(peer.state.bounds());
       peer.max_h = peer.state.max_smoothing_length();
       got[side] = true;
+      last_in_ = side;
     }
     const double t_fluid = peers_[kFluid].state.time(), t_solid = peers_[kSolid].state.time();
     if (std::abs(t_fluid - t_solid) > 1e-9 * std::max(1.0, settings_.run.end_time))
@@ -206,7 +207,9 @@ class Session {
     record(step, t, dt, forces, stop);
 
     const auto send_start = Clock::now();
-    for (int side : {kFluid, kSolid}) {
+    // The solver whose state came last sets the pace; the other has been
+    // waiting for the answer anyway: answer the last one first.
+    for (int side : {last_in_, 1 - last_in_}) {
       cp::Envelope reply;
       cp::CouplingStep& s = *reply.mutable_step();
       s.set_step(static_cast<std::uint64_t>(step));
@@ -310,6 +313,7 @@ class Session {
   std::array<Peer, 2> peers_;
   std::optional<sph::TimeSeriesWriter> timeseries_, coupling_;
   int level_ = -1;
+  int last_in_ = kFluid;  // the side whose state of this step arrived last
   double next_output_ = 0.0;
   double wait_seconds_ = 0.0, messaging_seconds_ = 0.0, pair_seconds_ = 0.0;
   sph::ProgressReporter progress_{settings_.run.end_time};
