@@ -49,8 +49,8 @@ class Session {
   int run() {
     handshake();
     for (long step = 0;; ++step) {
-      receive_states(step);
-      const bool stop = answer(step);
+      const int last_in = receive_states(step);
+      const bool stop = answer(step, last_in);
       if (stop) return 0;
       if (sph::stop_requested()) fail("the coupler was interrupted (Ctrl-C or SIGTERM)");
     }
@@ -155,8 +155,10 @@ class Session {
     return other.bounds.grown(reach + std::max(peers_[kFluid].max_h, peers_[kSolid].max_h));
   }
 
-  void receive_states(long step) {
+  // Returns the side whose state came last.
+  int receive_states(long step) {
     bool got[2] = {false, false};
+    int last_in = kFluid;
     while (!got[kFluid] || !got[kSolid]) {
       const std::string missing = !got[kFluid] && !got[kSolid] ? "fluid and solid"
                                   : !got[kFluid]               ? "fluid"
@@ -179,16 +181,17 @@ class Session {
       peer.bounds = cp::from_proto(peer.state.bounds());
       peer.max_h = peer.state.max_smoothing_length();
       got[side] = true;
-      last_in_ = side;
+      last_in = side;
     }
     const double t_fluid = peers_[kFluid].state.time(), t_solid = peers_[kSolid].state.time();
     if (std::abs(t_fluid - t_solid) > 1e-9 * std::max(1.0, settings_.run.end_time))
       fail("the solvers are out of step: fluid at t = " + std::to_string(t_fluid) +
            " s, solid at t = " + std::to_string(t_solid) + " s");
+    return last_in;
   }
 
   // Returns whether the run is over.
-  bool answer(long step) {
+  bool answer(long step, int last_in) {
     const auto pair_start = Clock::now();
     const CrossPhaseForces forces = compute_cross_phase_forces(
         peers_[kFluid].particles, peers_[kSolid].particles, settings_.cross_phase);
@@ -209,7 +212,7 @@ class Session {
     const auto send_start = Clock::now();
     // The solver whose state came last sets the pace; the other has been
     // waiting for the answer anyway: answer the last one first.
-    for (int side : {last_in_, 1 - last_in_}) {
+    for (int side : {last_in, 1 - last_in}) {
       cp::Envelope reply;
       cp::CouplingStep& s = *reply.mutable_step();
       s.set_step(static_cast<std::uint64_t>(step));
@@ -313,7 +316,6 @@ class Session {
   std::array<Peer, 2> peers_;
   std::optional<sph::TimeSeriesWriter> timeseries_, coupling_;
   int level_ = -1;
-  int last_in_ = kFluid;  // the side whose state of this step arrived last
   double next_output_ = 0.0;
   double wait_seconds_ = 0.0, messaging_seconds_ = 0.0, pair_seconds_ = 0.0;
   sph::ProgressReporter progress_{settings_.run.end_time};

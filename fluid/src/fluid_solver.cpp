@@ -1,6 +1,7 @@
 #include "fluid_solver.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -54,10 +55,11 @@ void FluidSolver::compute_forces() {
 
 sph::StepLimits FluidSolver::step_limits() const {
   const FluidParticles& P = particles_;
-  const double v_max2 = sph::parallel_max(
-      P.size(), 0.0, [&](long i) { return P.is_water(i) ? P.v[i].squaredNorm() : 0.0; });
-  const double a_max2 = sph::parallel_max(
-      P.size(), 0.0, [&](long i) { return P.is_water(i) ? P.a[i].squaredNorm() : 0.0; });
+  const auto [v_max2, a_max2] =
+      sph::parallel_max(P.size(), std::array{0.0, 0.0}, sph::worth_threads(P.size()), [&](long i) {
+        return P.is_water(i) ? std::array{P.v[i].squaredNorm(), P.a[i].squaredNorm()}
+                             : std::array{0.0, 0.0};
+      });
   return sph::step_limits(parameters_.run.cfl, parameters_.h, parameters_.c0, std::sqrt(v_max2),
                           std::sqrt(a_max2), parameters_.mu / parameters_.rho0);
 }

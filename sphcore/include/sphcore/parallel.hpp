@@ -6,6 +6,7 @@
 #include <omp.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <utility>
 
@@ -81,21 +82,47 @@ void parallel_for(std::size_t n, Body&& body) {
   parallel_for(n, worth_threads(n), std::forward<Body>(body));
 }
 
-// The largest value(i) over i in [0, n), and `none` if that is larger; value
-// may also update particle i (one pass instead of two).
-template <class Value>
-double parallel_max(std::size_t n, double none, bool use_team, Value&& value) {
-  const auto loop = [&value](long begin, long end, double largest) __attribute__((flatten)) {
-    for (long i = begin; i < end; ++i) largest = std::max(largest, value(i));
+namespace detail {
+// What parallel_max keeps: one largest value (double), or one for each of N
+// quantities (std::array<double, N>), seen as N doubles for the reduction.
+inline void keep_larger(double& largest, double value) {
+  largest = std::max(largest, value);
+}
+template <std::size_t N>
+void keep_larger(std::array<double, N>& largest, const std::array<double, N>& value) {
+  for (std::size_t k = 0; k < N; ++k) largest[k] = std::max(largest[k], value[k]);
+}
+inline double* values_of(double& largest) {
+  return &largest;
+}
+template <std::size_t N>
+double* values_of(std::array<double, N>& largest) {
+  return largest.data();
+}
+}  // namespace detail
+
+// The largest value(i) over i in [0, n), and `none` if that is larger. With
+// `none` a std::array<double, N> and value(i) one too, the largest of each of
+// N quantities in one pass. value may also update particle i (one pass
+// instead of two).
+template <class Maxima, class Value>
+Maxima parallel_max(std::size_t n, Maxima none, bool use_team, Value&& value) {
+  const auto loop = [&value](long begin, long end, Maxima largest) __attribute__((flatten)) {
+    for (long i = begin; i < end; ++i) detail::keep_larger(largest, value(i));
     return largest;
   };
   const long count = static_cast<long>(n);
   if (!on_team(use_team)) return loop(0, count, none);
-  double largest = none;
-#pragma omp parallel reduction(max : largest)
+  constexpr std::size_t kCount = sizeof(Maxima) / sizeof(double);
+  Maxima largest = none;
+  double* const shared = detail::values_of(largest);
+#pragma omp parallel reduction(max : shared[:kCount])
   {
     const auto [begin, end] = static_share(count);
-    largest = loop(begin, end, largest);
+    Maxima mine;
+    std::copy(shared, shared + kCount, detail::values_of(mine));  // the reduction's identity
+    mine = loop(begin, end, mine);
+    std::copy(detail::values_of(mine), detail::values_of(mine) + kCount, shared);
   }
   return largest;
 }

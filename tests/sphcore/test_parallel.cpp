@@ -1,0 +1,64 @@
+// The particle-loop helpers (sphcore/parallel.hpp) give a serial loop's result
+// on one thread and on two, above and below the size where they take threads.
+#include <gtest/gtest.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "sphcore/parallel.hpp"
+
+namespace sph {
+namespace {
+
+// Values whose largest lie in different threads' shares.
+std::vector<double> wave(std::size_t n, double phase) {
+  std::vector<double> values(n);
+  for (std::size_t i = 0; i < n; ++i) values[i] = std::sin(0.37 * static_cast<double>(i) + phase);
+  return values;
+}
+
+class OnThreads : public ::testing::TestWithParam<int> {
+ protected:
+  void SetUp() override {
+    before_ = omp_get_max_threads();
+    omp_set_num_threads(GetParam());
+  }
+  void TearDown() override { omp_set_num_threads(before_); }
+
+ private:
+  int before_ = 1;
+};
+
+TEST_P(OnThreads, ParallelMaxOfEachQuantityIsTheSerialOne) {
+  for (const std::size_t n : {std::size_t{7}, std::size_t{10001}}) {
+    const std::vector<double> a = wave(n, 0.0), b = wave(n, 1.9);
+    const auto [largest_a, largest_b] =
+        parallel_max(n, std::array{-5.0, -5.0}, kTeamAtAnySize, [&](long i) {
+          return std::array{a[i], -b[i]};
+        });
+    EXPECT_EQ(largest_a, *std::max_element(a.begin(), a.end())) << "n = " << n;
+    EXPECT_EQ(largest_b, -*std::min_element(b.begin(), b.end())) << "n = " << n;
+    // `none` stands where no value is larger.
+    EXPECT_EQ(parallel_max(n, 2.0, kTeamAtAnySize, [&](long i) { return a[i]; }), 2.0);
+    EXPECT_EQ(parallel_max(n, -2.0, [&](long i) { return a[i]; }),
+              *std::max_element(a.begin(), a.end()));
+  }
+}
+
+TEST_P(OnThreads, ParallelFindFirstIsTheSerialScansFind) {
+  const std::size_t n = 10001;
+  for (const long wanted : {0L, 17L, 5001L, 9000L, 10000L}) {
+    // Several hits, in both threads' shares: the first one counts.
+    const auto found = [&](long i) { return i == wanted || i == 9500 || i == 10000; };
+    EXPECT_EQ(parallel_find_first(n, found), std::min(wanted, 9500L));
+  }
+  EXPECT_EQ(parallel_find_first(n, [](long) { return false; }), static_cast<long>(n));
+}
+
+INSTANTIATE_TEST_SUITE_P(Threads, OnThreads, ::testing::Values(1, 2));
+
+}  // namespace
+}  // namespace sph
