@@ -99,7 +99,8 @@ class Session {
       const std::string who = side >= 0 ? kSideName[side] : "a peer";
       fail(who + " stopped: " + message->envelope.error().message(), side);
     }
-    return *message;
+    // Moved, not copied: a state is some 100 kB of arrays.
+    return std::move(*message);
   }
 
   int side_of(const std::string& identity) const {
@@ -220,11 +221,8 @@ class Session {
       s.set_stop(stop);
       s.set_whole_step(settings_.solid_at_fluid_step);
       const auto& a = side == kFluid ? forces.fluid_a : forces.solid_a;
-      s.mutable_acceleration()->Reserve(2 * static_cast<int>(a.size()));
-      for (const sph::Vec2& acceleration : a) {
-        s.add_acceleration(acceleration.x());
-        s.add_acceleration(acceleration.y());
-      }
+      s.mutable_acceleration()->Resize(2 * static_cast<int>(a.size()), 0.0);
+      std::copy_n(cp::doubles_of(a), 2 * a.size(), s.mutable_acceleration()->mutable_data());
       if (side == kFluid)
         s.mutable_density_rate()->Add(forces.fluid_drho.begin(), forces.fluid_drho.end());
       *s.mutable_send_region() = cp::to_proto(send_region(side));

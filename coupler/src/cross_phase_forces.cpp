@@ -26,7 +26,14 @@ std::vector<Pair> find_pairs(const sph::InterfaceParticles& F, const sph::Interf
       *std::max_element(F.h.begin(), F.h.end()) + *std::max_element(S.h.begin(), S.h.end());
   sph::CellGrid grid;
   grid.build(S.x, range);
+  // The solid's positions and h in the grid's order: a candidate range
+  // streams memory instead of gathering through the order.
   const std::vector<int>& order = grid.order();
+  std::vector<Vec2> x_s(S.size());
+  std::vector<double> h_s(S.size());
+  for (std::size_t k = 0; k < order.size(); ++k) x_s[k] = S.x[order[k]], h_s[k] = S.h[order[k]];
+  std::vector<int> candidate(S.size());
+  std::vector<double> candidate_r2(S.size());
   // Each phase has one h in practice, so the kernel's constants are taken
   // again only when h_fs changes, not for every pair.
   double kernel_h = 1.0;
@@ -34,20 +41,28 @@ std::vector<Pair> find_pairs(const sph::InterfaceParticles& F, const sph::Interf
   sph::kernel::GradientFactor gradient_factor(kernel_h);
   for (std::size_t f = 0; f < F.size(); ++f) {
     const Vec2 x_f = F.x[f];
+    const double h_f = F.h[f];
     grid.for_each_candidate_range(x_f, [&](int begin, int end) {
+      // Every candidate is written, and the count moves past it only if it is
+      // a pair: no branch to mispredict.
+      std::size_t count = 0;
       for (int k = begin; k < end; ++k) {
-        const int s = order[k];
-        const Vec2 x_fs = x_f - S.x[s];
-        const double reach = F.h[f] + S.h[s];
-        const double r2 = x_fs.squaredNorm();
-        if (r2 >= reach * reach || r2 == 0.0) continue;
-        const double h_fs = 0.5 * reach, r = std::sqrt(r2);
+        const double r2 = (x_f - x_s[k]).squaredNorm(), reach = h_f + h_s[k];
+        candidate[count] = k;
+        candidate_r2[count] = r2;
+        count += static_cast<std::size_t>(r2 < reach * reach && r2 > 0.0);
+      }
+      for (std::size_t n = 0; n < count; ++n) {
+        const int k = candidate[n];
+        const double h_fs = 0.5 * (h_f + h_s[k]), r = std::sqrt(candidate_r2[n]);
         if (h_fs != kernel_h) {
           kernel_h = h_fs;
           W_of = sph::kernel::Value(h_fs);
           gradient_factor = sph::kernel::GradientFactor(h_fs);
         }
-        pairs.push_back({static_cast<int>(f), s, x_fs, h_fs, W_of(r), gradient_factor(r) * x_fs});
+        const Vec2 x_fs = x_f - x_s[k];
+        pairs.push_back(
+            {static_cast<int>(f), order[k], x_fs, h_fs, W_of(r), gradient_factor(r) * x_fs});
       }
     });
   }

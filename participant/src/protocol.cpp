@@ -1,6 +1,7 @@
 #include "participant/protocol.hpp"
 
 #include <malloc.h>
+#include <sched.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -35,25 +36,22 @@ sph::Region from_proto(const Region& region) {
 
 void to_proto(const sph::InterfaceParticles& P, InterfaceState& state) {
   const int n = static_cast<int>(P.size());
-  state.clear_id(), state.clear_position(), state.clear_velocity(), state.clear_stress();
-  state.clear_mass(), state.clear_density(), state.clear_smoothing_length();
-  state.clear_sound_speed();
-  state.mutable_id()->Reserve(n);
-  state.mutable_position()->Reserve(2 * n);
-  state.mutable_velocity()->Reserve(2 * n);
-  state.mutable_stress()->Reserve(4 * n);
+  state.mutable_id()->Assign(P.id.begin(), P.id.end());
+  state.mutable_position()->Resize(2 * n, 0.0);
+  std::copy_n(doubles_of(P.x), 2 * n, state.mutable_position()->mutable_data());
+  state.mutable_velocity()->Resize(2 * n, 0.0);
+  std::copy_n(doubles_of(P.v), 2 * n, state.mutable_velocity()->mutable_data());
+  state.mutable_stress()->Resize(4 * n, 0.0);
+  double* stress = state.mutable_stress()->mutable_data();
   for (int i = 0; i < n; ++i) {
-    state.add_id(static_cast<std::uint64_t>(P.id[i]));
-    state.add_position(P.x[i].x()), state.add_position(P.x[i].y());
-    state.add_velocity(P.v[i].x()), state.add_velocity(P.v[i].y());
     const sph::Mat2& s = P.sigma[i];
-    state.add_stress(s(0, 0)), state.add_stress(s(0, 1));
-    state.add_stress(s(1, 0)), state.add_stress(s(1, 1));
+    stress[4 * i] = s(0, 0), stress[4 * i + 1] = s(0, 1);
+    stress[4 * i + 2] = s(1, 0), stress[4 * i + 3] = s(1, 1);
   }
-  state.mutable_mass()->Add(P.m.begin(), P.m.end());
-  state.mutable_density()->Add(P.rho.begin(), P.rho.end());
-  state.mutable_smoothing_length()->Add(P.h.begin(), P.h.end());
-  state.mutable_sound_speed()->Add(P.c.begin(), P.c.end());
+  state.mutable_mass()->Assign(P.m.begin(), P.m.end());
+  state.mutable_density()->Assign(P.rho.begin(), P.rho.end());
+  state.mutable_smoothing_length()->Assign(P.h.begin(), P.h.end());
+  state.mutable_sound_speed()->Assign(P.c.begin(), P.c.end());
 }
 
 sph::InterfaceParticles from_proto(const InterfaceState& state) {
@@ -71,20 +69,24 @@ sph::InterfaceParticles from_proto(const InterfaceState& state) {
   expect(state.density_size(), 1, "density");
   expect(state.smoothing_length_size(), 1, "smoothing_length");
   expect(state.sound_speed_size(), 1, "sound_speed");
+  const auto count = static_cast<std::size_t>(n);
   sph::InterfaceParticles P;
-  P.reserve(static_cast<std::size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    sph::Mat2 sigma;
-    sigma << state.stress(4 * i), state.stress(4 * i + 1), state.stress(4 * i + 2),
-        state.stress(4 * i + 3);
-    P.add(static_cast<long>(state.id(i)),
-          sph::Vec2(state.position(2 * i), state.position(2 * i + 1)),
-          sph::Vec2(state.velocity(2 * i), state.velocity(2 * i + 1)), sigma, state.mass(i),
-          state.density(i), state.smoothing_length(i), state.sound_speed(i));
-    if (!(state.mass(i) > 0.0 && state.density(i) > 0.0 && state.smoothing_length(i) > 0.0))
-      throw CouplingError("malformed InterfaceState: particle " + std::to_string(state.id(i)) +
-                          " has a mass, density or smoothing length that is not positive");
+  P.id.assign(state.id().begin(), state.id().end());
+  P.x.resize(count), P.v.resize(count), P.sigma.resize(count);
+  std::copy_n(state.position().data(), 2 * count, doubles_of(P.x));
+  std::copy_n(state.velocity().data(), 2 * count, doubles_of(P.v));
+  for (std::size_t i = 0; i < count; ++i) {
+    const double* s = state.stress().data() + 4 * i;  // xx, xy, yx, yy
+    P.sigma[i] << s[0], s[1], s[2], s[3];
   }
+  P.m.assign(state.mass().begin(), state.mass().end());
+  P.rho.assign(state.density().begin(), state.density().end());
+  P.h.assign(state.smoothing_length().begin(), state.smoothing_length().end());
+  P.c.assign(state.sound_speed().begin(), state.sound_speed().end());
+  for (std::size_t i = 0; i < count; ++i)
+    if (!(P.m[i] > 0.0 && P.rho[i] > 0.0 && P.h[i] > 0.0))
+      throw CouplingError("malformed InterfaceState: particle " + std::to_string(P.id[i]) +
+                          " has a mass, density or smoothing length that is not positive");
   return P;
 }
 
@@ -143,10 +145,27 @@ void send_to(zmq::socket_t& socket, const std::string& identity, const Envelope&
 }
 
 namespace {
+bool readable_now(zmq::socket_t& socket) {
+  zmq::pollitem_t item{socket.handle(), 0, ZMQ_POLLIN, 0};
+  try {
+    return zmq::poll(&item, 1, std::chrono::milliseconds(0)) > 0;
+  } catch (const zmq::error_t& error) {
+    if (error.num() != EINTR) throw;
+    return false;
+  }
+}
+
 // A signal (the launcher's, a child's) interrupts the poll with EINTR: wait
 // on for what is left of the timeout; a stop request is seen between steps.
-bool wait_readable(zmq::socket_t& socket, std::chrono::milliseconds timeout) {
-  const auto deadline = std::chrono::steady_clock::now() + timeout;
+bool wait_readable(zmq::socket_t& socket, std::chrono::milliseconds timeout,
+                   std::chrono::microseconds spin = std::chrono::microseconds(0)) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto deadline = start + timeout;
+  const auto spin_end = std::min(start + spin, deadline);
+  while (std::chrono::steady_clock::now() < spin_end) {
+    if (readable_now(socket)) return true;
+    sched_yield();  // this process's ZeroMQ I/O thread may need the core
+  }
   for (;;) {
     zmq::pollitem_t item{socket.handle(), 0, ZMQ_POLLIN, 0};
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
@@ -161,8 +180,8 @@ bool wait_readable(zmq::socket_t& socket, std::chrono::milliseconds timeout) {
 }  // namespace
 
 std::optional<Envelope> receive(zmq::socket_t& socket, std::chrono::milliseconds timeout,
-                                const std::string& from) {
-  if (!wait_readable(socket, timeout)) return std::nullopt;
+                                const std::string& from, std::chrono::microseconds spin) {
+  if (!wait_readable(socket, timeout, spin)) return std::nullopt;
   zmq::message_t frame;
   (void)socket.recv(frame, zmq::recv_flags::none);
   return parse(bytes_of(frame), from);

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <vector>
 #include <zmq.hpp>
 
 #include "coupling.pb.h"
@@ -27,6 +28,17 @@ const char* phase_name(Phase phase);
 
 Region to_proto(const sph::Region& region);
 sph::Region from_proto(const Region& region);
+
+// The doubles of 2-vectors stored one after the other (x, y per vector), the
+// layout of the messages' packed arrays: copied whole, not value by value,
+// which on the coupler's critical path cost as much as the pair forces.
+static_assert(sizeof(sph::Vec2) == 2 * sizeof(double));
+inline const double* doubles_of(const std::vector<sph::Vec2>& vectors) {
+  return vectors.empty() ? nullptr : vectors.front().data();
+}
+inline double* doubles_of(std::vector<sph::Vec2>& vectors) {
+  return vectors.empty() ? nullptr : vectors.front().data();
+}
 
 void to_proto(const sph::InterfaceParticles& particles, InterfaceState& state);
 // Throws CouplingError if the arrays do not have one entry per particle.
@@ -51,8 +63,14 @@ Envelope parse(std::string_view bytes, const std::string& from);
 // then the frame). Receives return nothing when the timeout passes.
 void send(zmq::socket_t& socket, const Envelope& envelope);
 void send_to(zmq::socket_t& socket, const std::string& identity, const Envelope& envelope);
+// `spin`: how long to poll, yielding the core between polls, before the
+// thread sleeps until the message comes (zero: sleep at once). An answer
+// expected within a round trip or two is picked up without waking a sleeping
+// core, which costs about 0.1 ms on a virtual machine; MPI libraries
+// busy-poll for the same reason.
 std::optional<Envelope> receive(zmq::socket_t& socket, std::chrono::milliseconds timeout,
-                                const std::string& from);
+                                const std::string& from,
+                                std::chrono::microseconds spin = std::chrono::microseconds(0));
 struct Routed {
   std::string identity;
   Envelope envelope;
