@@ -220,6 +220,7 @@ class Session {
       s.set_dt(dt);
       s.set_stop(stop);
       s.set_whole_step(settings_.solid_at_fluid_step);
+      s.set_came_last(side == last_in);
       const auto& a = side == kFluid ? forces.fluid_a : forces.solid_a;
       s.mutable_acceleration()->Resize(2 * static_cast<int>(a.size()), 0.0);
       std::copy_n(cp::doubles_of(a), 2 * a.size(), s.mutable_acceleration()->mutable_data());

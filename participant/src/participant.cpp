@@ -13,13 +13,15 @@ struct Participant::Impl {
   zmq::socket_t socket{context, zmq::socket_type::dealer};
   std::chrono::milliseconds timeout;
   std::string endpoint;
-  std::size_t sent = 0;  // particles in the last state: the answer has one entry for each
-  double waited = 0.0;   // s, in await_step, sent with every state
+  std::size_t sent = 0;    // particles in the last state: the answer has one entry for each
+  double waited = 0.0;     // s, in await_step, sent with every state
+  bool came_last = false;  // in the last step: this solver sets the pace
 
-  // The coupler's answer to a step comes within a round trip (about 0.1 ms)
-  // plus its pair forces once the other solver's state is in: polled for this
-  // long before the thread sleeps. On the multi-rate elastic plate it halved
-  // the solid's wait per window (0.37-0.61 to 0.25-0.32 ms).
+  // The solver that sets the pace has its answer within a round trip (about
+  // 0.1 ms) and the coupler's pair forces: it polls for this long before its
+  // thread sleeps, so that no idle core has to be woken for the answer
+  // (README, "Speed"; the commit that added it gives the gain). The other
+  // solver waits for it anyway and sleeps at once, leaving the core free.
   static constexpr std::chrono::microseconds kStepSpin{300};
 
   Envelope await(const char* expected,
@@ -96,10 +98,12 @@ void Participant::send_state(long step, double time, double proposed_dt, const s
 StepReply Participant::await_step() {
   const std::size_t sent = impl_->sent;
   const auto start = std::chrono::steady_clock::now();
-  const Envelope reply = impl_->await("the common step", Impl::kStepSpin);
+  const Envelope reply = impl_->await(
+      "the common step", impl_->came_last ? Impl::kStepSpin : std::chrono::microseconds(0));
   impl_->waited += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!reply.has_step()) throw CouplingError("the coupler answered a step with the wrong message");
   const CouplingStep& s = reply.step();
+  impl_->came_last = s.came_last();
   if (!s.stop() && s.acceleration_size() != 2 * static_cast<int>(sent))
     throw CouplingError("the coupler sent " + std::to_string(s.acceleration_size() / 2) +
                         " accelerations for " + std::to_string(sent) + " particles");

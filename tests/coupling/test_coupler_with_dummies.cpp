@@ -1,7 +1,8 @@
 // The three processes together: cosph-coupler and two cosph-dummy solvers over
 // ipc:// in a scratch folder. A run that ends well (the common step is the
 // smaller proposal, momentum is conserved across the wire, both sides' gauges
-// are recorded), and runs that fail: a solver that dies, hangs, sends garbage,
+// are recorded), the answer naming the solver whose state came last, and runs
+// that fail: a solver that dies, hangs, sends garbage,
 // never connects, or speaks another protocol version. Each must end every
 // process with a message that names the reason, within the coupling timeout.
 #include <gtest/gtest.h>
@@ -9,8 +10,10 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <sstream>
+#include <thread>
 
 #include "child_process.hpp"
 #include "participant/protocol.hpp"
@@ -189,6 +192,56 @@ TEST_F(CouplerWithDummies, MultiRateWindowIsTheLargerStepAndTheOtherSideSubsteps
   const std::size_t last_solid = windows - 1, last_fluid = fluid_steps.rows.size() - 1;
   EXPECT_NEAR(solid_steps.at(last_solid, "t") + solid_steps.at(last_solid, "dt"), kEndTime, 1e-12);
   EXPECT_NEAR(fluid_steps.at(last_fluid, "t") + fluid_steps.at(last_fluid, "dt"), kEndTime, 1e-12);
+}
+
+// The coupler tells the solver whose state came last that it did (the
+// solver that sets the pace polls for its next answer): both orders, played
+// on raw sockets so that the order is the test's.
+TEST_F(CouplerWithDummies, TheAnswerTellsTheSolverWhoseStateCameLast) {
+  namespace cp = cosph::coupling;
+  write_case(5.0);
+  auto coupler = start_coupler();
+  zmq::context_t context;
+  std::map<cp::Phase, zmq::socket_t> peers;
+  const std::chrono::milliseconds timeout(5000);
+  for (const cp::Phase phase : {cp::FLUID, cp::SOLID}) {
+    zmq::socket_t& socket =
+        peers.emplace(phase, zmq::socket_t(context, zmq::socket_type::dealer)).first->second;
+    socket.set(zmq::sockopt::linger, 0);
+    socket.connect(endpoint());
+    cp::Envelope hello;
+    hello.mutable_hello()->set_protocol_version(cp::kProtocolVersion);
+    hello.mutable_hello()->set_phase(phase);
+    hello.mutable_hello()->set_solver("the test");
+    hello.mutable_hello()->set_max_smoothing_length(1e-3);
+    cp::send(socket, hello);
+  }
+  for (auto& [phase, socket] : peers)
+    ASSERT_TRUE(cp::receive(socket, timeout, "the coupler").value().has_welcome());
+
+  auto send_state = [&](cp::Phase phase, long step) {
+    cp::Envelope message;
+    message.mutable_state()->set_step(static_cast<std::uint64_t>(step));
+    message.mutable_state()->set_time(1e-3 * static_cast<double>(step));
+    message.mutable_state()->set_proposed_dt(1e-3);
+    message.mutable_state()->set_max_smoothing_length(1e-3);
+    cp::send(peers.at(phase), message);
+  };
+  auto came_last = [&](cp::Phase phase) {
+    const std::optional<cp::Envelope> reply = cp::receive(peers.at(phase), timeout, "the coupler");
+    EXPECT_TRUE(reply && reply->has_step()) << "no step for " << cp::phase_name(phase);
+    return reply && reply->step().came_last();
+  };
+  long step = 0;
+  for (const auto& [first, last] :
+       {std::pair{cp::FLUID, cp::SOLID}, std::pair{cp::SOLID, cp::FLUID}}) {
+    send_state(first, step);
+    std::this_thread::sleep_for(100ms);  // the coupler has the first state well before the last
+    send_state(last, step);
+    EXPECT_TRUE(came_last(last)) << cp::phase_name(last) << " sent last at step " << step;
+    EXPECT_FALSE(came_last(first)) << cp::phase_name(first) << " sent first at step " << step;
+    ++step;
+  }
 }
 
 // Expects every process to have ended by itself before the deadline and been reaped.

@@ -30,8 +30,8 @@ Region to_proto(const sph::Region& region);
 sph::Region from_proto(const Region& region);
 
 // The doubles of 2-vectors stored one after the other (x, y per vector), the
-// layout of the messages' packed arrays: copied whole, not value by value,
-// which on the coupler's critical path cost as much as the pair forces.
+// layout of the messages' packed arrays, so that those are copied whole
+// rather than value by value.
 static_assert(sizeof(sph::Vec2) == 2 * sizeof(double));
 inline const double* doubles_of(const std::vector<sph::Vec2>& vectors) {
   return vectors.empty() ? nullptr : vectors.front().data();
