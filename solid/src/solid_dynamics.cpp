@@ -82,12 +82,13 @@ void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
       W[k] = W_of(r_ij);
       F[k] = gradient_factor(r_ij);
     }
+    neighbours.resize(count);
     for (std::size_t k = 0; k < count; ++k) {
       const int j = J[k];
       const Vec2 x_ij = x_i - P.x[j];
       const double W_ij = W[k];
       const Vec2 grad_W_ij = F[k] * x_ij;
-      neighbours.push_back({j, W_ij, grad_W_ij});
+      neighbours[k] = {j, W_ij, grad_W_ij};
       const double V_j = P.volume[j];
       const Vec2 v_ij = v_i - P.v[j];
       // Continuity (SPEC.md "Solid": as the fluid's, without diffusion).
