@@ -35,9 +35,11 @@ struct CouplerLog {
 };
 
 // One particle moving at kSpeed. With kSplits, it splits its step as the
-// cosph solvers do, and its force pass waits (at most two seconds) for the
-// coupler to hold this step's state; without, it only looks. It counts the
-// passes that found the state not yet out.
+// cosph solvers do. Its force pass waits for the coupler to hold this step's
+// state: at most two seconds when it splits, and 50 ms when it does not (the
+// state must then never come during the pass, and a state sent too early
+// would reach the coupler within that time). It counts the passes that found
+// the state not yet out.
 template <bool kSplits>
 class MovingParticle {
  public:
@@ -77,7 +79,9 @@ class MovingParticle {
   void advance(double dt) { x_.x() += kSpeed * dt; }
   void force_pass() {
     const long wanted = steps_ + 2;  // the first state, and this step's
-    const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(kSplits ? 2 : 0);
+    const auto give_up =
+        std::chrono::steady_clock::now() +
+        (kSplits ? std::chrono::milliseconds(2000) : std::chrono::milliseconds(50));
     while (coupler_.states.load() < wanted && std::chrono::steady_clock::now() < give_up)
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     if (coupler_.states.load() < wanted) ++late_;
