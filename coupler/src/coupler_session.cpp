@@ -91,6 +91,8 @@ class Session {
       fail(error.what());
     }
     wait_seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
+    if (!message && sph::stop_requested())
+      fail("the coupler was interrupted (Ctrl-C or SIGTERM): " + waiting_for);
     if (!message)
       fail(waiting_for + ": nothing within " + std::to_string(settings_.timeout_seconds) +
            " s (the solver died, stalled, or never connected)");

@@ -5,6 +5,7 @@
 #include <zmq.hpp>
 
 #include "participant/protocol.hpp"
+#include "sphcore/run_control.hpp"
 
 namespace cosph::coupling {
 
@@ -27,6 +28,9 @@ struct Participant::Impl {
   Envelope await(const char* expected,
                  std::chrono::microseconds spin = std::chrono::microseconds(0)) {
     auto reply = receive(socket, timeout, "the coupler", spin);
+    if (!reply && sph::stop_requested())
+      throw CouplingError(std::string("interrupted (Ctrl-C or SIGTERM) while waiting for ") +
+                          expected);
     if (!reply)
       throw CouplingError("the coupler at " + endpoint + " did not answer within " +
                           std::to_string(static_cast<double>(timeout.count()) / 1000.0) +

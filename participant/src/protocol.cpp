@@ -1,5 +1,7 @@
 #include "participant/protocol.hpp"
 
+#include "sphcore/run_control.hpp"
+
 #include <malloc.h>
 #include <sched.h>
 
@@ -155,23 +157,36 @@ bool readable_now(zmq::socket_t& socket) {
   }
 }
 
-// A signal (the launcher's, a child's) interrupts the poll with EINTR: wait
-// on for what is left of the timeout; a stop request is seen between steps.
+// Waits in slices, so that a stop request (SIGINT or SIGTERM: Ctrl-C, or the
+// launcher's when another process failed) cuts what is left of the wait to
+// kStopGrace. In a sound run the message comes within milliseconds, and the
+// step ends cleanly (final snapshots, then the stop); a peer that died would
+// otherwise hold the wait for the whole timeout, past the launcher's grace,
+// and get this process killed. Any other signal interrupts the poll with
+// EINTR, and the wait goes on.
 bool wait_readable(zmq::socket_t& socket, std::chrono::milliseconds timeout,
                    std::chrono::microseconds spin = std::chrono::microseconds(0)) {
+  constexpr std::chrono::milliseconds kSlice{100}, kStopGrace{1000};
   const auto start = std::chrono::steady_clock::now();
-  const auto deadline = start + timeout;
+  auto deadline = start + timeout;
   const auto spin_end = std::min(start + spin, deadline);
   while (std::chrono::steady_clock::now() < spin_end) {
     if (readable_now(socket)) return true;
     sched_yield();  // this process's ZeroMQ I/O thread may need the core
   }
+  bool stopping = false;
   for (;;) {
+    const auto now = std::chrono::steady_clock::now();
+    if (!stopping && sph::stop_requested()) {
+      stopping = true;
+      deadline = std::min(deadline, now + kStopGrace);
+    }
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now);
     zmq::pollitem_t item{socket.handle(), 0, ZMQ_POLLIN, 0};
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-        deadline - std::chrono::steady_clock::now());
     try {
-      return zmq::poll(&item, 1, std::max(left, std::chrono::milliseconds(0))) > 0;
+      if (zmq::poll(&item, 1, std::clamp(left, std::chrono::milliseconds(0), kSlice)) > 0)
+        return true;
+      if (left <= kSlice) return false;
     } catch (const zmq::error_t& error) {
       if (error.num() != EINTR) throw;
     }

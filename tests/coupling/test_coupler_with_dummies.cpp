@@ -4,7 +4,8 @@
 // are recorded), the answer naming the solver whose state came last, and runs
 // that fail: a solver that dies, hangs, sends garbage,
 // never connects, or speaks another protocol version. Each must end every
-// process with a message that names the reason, within the coupling timeout.
+// process with a message that names the reason, within the coupling timeout;
+// SIGTERM ends a coupler's wait for a silent solver within about a second.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -250,6 +251,32 @@ void expect_all_gone(std::initializer_list<ChildProcess*> processes) {
     EXPECT_TRUE(process->reaped());
     EXPECT_FALSE(process->exists());
   }
+}
+
+// SIGTERM (what the launcher sends when another process failed) stops a
+// coupler that is waiting for a solver that went quiet within about a
+// second, not at the end of the coupling timeout: otherwise the launcher
+// would have to kill it, and its socket file would stay behind.
+TEST_F(CouplerWithDummies, SigtermEndsACouplersWaitForASilentSolverAtOnce) {
+  write_case(30.0);
+  auto coupler = start_coupler();
+  auto fluid = start_dummy("fluid");
+  auto solid = start_dummy("solid", {"--hang-at-step", "4"});
+  // Step 4's exchange: the fluid has sent its state, the solid never will.
+  std::this_thread::sleep_for(1s);
+  ASSERT_EQ(coupler->wait_until(Clock::now()), ChildProcess::kStillRunning) << coupler->err();
+  const auto sent = Clock::now();
+  coupler->signal(SIGTERM);
+  const int coupler_code = coupler->wait_until(sent + 5s);
+  EXPECT_NE(coupler_code, ChildProcess::kStillRunning) << "the coupler waited on after SIGTERM";
+  EXPECT_NE(coupler_code, 0);
+  EXPECT_TRUE(contains(coupler->err(), "interrupted")) << coupler->err();
+  EXPECT_FALSE(std::filesystem::exists(dir_.file("coupler.sock")));
+  // The coupler's error reaches the fluid, which stops too.
+  EXPECT_NE(fluid->wait_until(sent + 5s), ChildProcess::kStillRunning);
+  solid->signal(SIGTERM);
+  EXPECT_NE(solid->wait_until(Clock::now() + 3s), ChildProcess::kStillRunning);
+  expect_all_gone({coupler.get(), fluid.get(), solid.get()});
 }
 
 TEST_F(CouplerWithDummies, ASolverThatDiesEndsTheRunWithItsReason) {

@@ -60,7 +60,9 @@ std::string serialise(const Envelope& envelope);
 Envelope parse(std::string_view bytes, const std::string& from);
 
 // One-frame messages (DEALER side) and routed ones (ROUTER side: identity,
-// then the frame). Receives return nothing when the timeout passes.
+// then the frame). Receives return nothing when the timeout passes; once a
+// stop is requested (sph::stop_requested()), they wait at most a second more:
+// the caller tells which.
 void send(zmq::socket_t& socket, const Envelope& envelope);
 void send_to(zmq::socket_t& socket, const std::string& identity, const Envelope& envelope);
 // `spin`: how long to poll, yielding the core between polls, before the
