@@ -147,10 +147,12 @@ void send_to(zmq::socket_t& socket, const std::string& identity, const Envelope&
 }
 
 namespace {
-bool readable_now(zmq::socket_t& socket) {
+// Whether a message is in within `timeout`; false when a signal interrupts the
+// poll (EINTR), which the caller's loop then polls again.
+bool poll_readable(zmq::socket_t& socket, std::chrono::milliseconds timeout) {
   zmq::pollitem_t item{socket.handle(), 0, ZMQ_POLLIN, 0};
   try {
-    return zmq::poll(&item, 1, std::chrono::milliseconds(0)) > 0;
+    return zmq::poll(&item, 1, timeout) > 0;
   } catch (const zmq::error_t& error) {
     if (error.num() != EINTR) throw;
     return false;
@@ -166,30 +168,25 @@ bool readable_now(zmq::socket_t& socket) {
 // EINTR, and the wait goes on.
 bool wait_readable(zmq::socket_t& socket, std::chrono::milliseconds timeout,
                    std::chrono::microseconds spin = std::chrono::microseconds(0)) {
-  constexpr std::chrono::milliseconds kSlice{100}, kStopGrace{1000};
-  const auto start = std::chrono::steady_clock::now();
+  using std::chrono::milliseconds, std::chrono::steady_clock;
+  constexpr milliseconds kSlice{100}, kStopGrace{1000};
+  const auto start = steady_clock::now();
   auto deadline = start + timeout;
   const auto spin_end = std::min(start + spin, deadline);
-  while (std::chrono::steady_clock::now() < spin_end) {
-    if (readable_now(socket)) return true;
+  while (steady_clock::now() < spin_end) {
+    if (poll_readable(socket, milliseconds(0))) return true;
     sched_yield();  // this process's ZeroMQ I/O thread may need the core
   }
   bool stopping = false;
   for (;;) {
-    const auto now = std::chrono::steady_clock::now();
+    const auto now = steady_clock::now();
     if (!stopping && sph::stop_requested()) {
       stopping = true;
       deadline = std::min(deadline, now + kStopGrace);
     }
-    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now);
-    zmq::pollitem_t item{socket.handle(), 0, ZMQ_POLLIN, 0};
-    try {
-      if (zmq::poll(&item, 1, std::clamp(left, std::chrono::milliseconds(0), kSlice)) > 0)
-        return true;
-      if (left <= kSlice) return false;
-    } catch (const zmq::error_t& error) {
-      if (error.num() != EINTR) throw;
-    }
+    const auto left = std::chrono::ceil<milliseconds>(deadline - now);
+    if (poll_readable(socket, std::clamp(left, milliseconds(0), kSlice))) return true;
+    if (steady_clock::now() >= deadline) return false;
   }
 }
 }  // namespace

@@ -1,6 +1,7 @@
 #include "solid_solver.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -77,12 +78,10 @@ void SolidSolver::update_stress(Including including) {
 
 sph::StepLimits SolidSolver::step_limits() const {
   const SolidParticles& P = particles_;
-  double v_max2 = 0.0, a_max2 = 0.0, c_max = 0.0;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    v_max2 = std::max(v_max2, P.v[i].squaredNorm());
-    a_max2 = std::max(a_max2, P.a[i].squaredNorm());
-    c_max = std::max(c_max, P.c[i]);
-  }
+  const auto [v_max2, a_max2, c_max] =
+      sph::parallel_max(P.size(), std::array{0.0, 0.0, 0.0}, sph::kTeamAtAnySize, [&](long i) {
+        return std::array{P.v[i].squaredNorm(), P.a[i].squaredNorm(), P.c[i]};
+      });
   return sph::step_limits(parameters_.run.cfl, parameters_.h, c_max, std::sqrt(v_max2),
                           std::sqrt(a_max2), 0.0);
 }
