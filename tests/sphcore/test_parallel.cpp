@@ -58,6 +58,18 @@ TEST_P(OnThreads, ParallelFindFirstIsTheSerialScansFind) {
   EXPECT_EQ(parallel_find_first(n, [](long) { return false; }), static_cast<long>(n));
 }
 
+TEST_P(OnThreads, ParallelAnyIsTheSerialScansAnswer) {
+  for (const std::size_t n : {std::size_t{7}, std::size_t{10001}}) {
+    const long last = static_cast<long>(n) - 1;
+    // One hit at a time, in either thread's share and in the vector loop's remainder.
+    for (const long hit : {0L, 3L, last / 2 + 1, last}) {
+      const auto found = [&](long i) { return i == hit; };
+      EXPECT_TRUE(parallel_any(n, kTeamAtAnySize, found)) << "n = " << n << ", hit " << hit;
+    }
+    EXPECT_FALSE(parallel_any(n, kTeamAtAnySize, [](long) { return false; })) << "n = " << n;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Threads, OnThreads, ::testing::Values(1, 2));
 
 }  // namespace

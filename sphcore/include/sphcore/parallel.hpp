@@ -151,4 +151,26 @@ long parallel_find_first(std::size_t n, Found&& found) {
   return first;
 }
 
+// Whether found(i) holds for some i in [0, n). Every i is tested, with no
+// early exit, so that a branch-free test on plain arrays vectorises: a screen
+// over all particles that is almost always passed costs a fraction of a loop
+// that stops at the first hit but tests one particle at a time.
+template <class Found>
+bool parallel_any(std::size_t n, bool use_team, Found&& found) {
+  const auto loop = [&found](long begin, long end) __attribute__((flatten)) {
+    long any = 0;  // a bool here, narrower than the tests' doubles, does not vectorise
+    for (long i = begin; i < end; ++i) any |= static_cast<long>(found(i));
+    return any != 0;
+  };
+  const long count = static_cast<long>(n);
+  if (!on_team(use_team)) return loop(0, count);
+  bool any = false;
+#pragma omp parallel reduction(|| : any)
+  {
+    const auto [begin, end] = static_share(count);
+    any = loop(begin, end);
+  }
+  return any;
+}
+
 }  // namespace sph
