@@ -11,6 +11,7 @@
 #include "sphcore/parallel.hpp"
 #include "sphcore/permutation.hpp"
 #include "sphcore/runaway_error.hpp"
+#include "sphcore/runaway_screen.hpp"
 
 namespace cosph::fluid {
 
@@ -153,21 +154,17 @@ const char* FluidSolver::runaway_reason(std::size_t i) const {
 }
 
 bool FluidSolver::may_have_run_away() const {
+  namespace screen = sph::screen;
   const FluidParticles& P = particles_;
-  // Plain arrays, and & rather than &&: through Eigen's types, or with a
-  // branch per test, the loop does not vectorise. x * 0 is 0 for finite x
-  // only; a speed within 1 % of c0 is left to runaway_reason to judge exactly.
-  const double* const x = P.x.data()->data();
-  const double* const v = P.v.data()->data();
+  const double* const x = screen::doubles(P.x);
+  const double* const v = screen::doubles(P.v);
   const double* const rho = P.rho.data();
   const Kind* const kind = P.kind.data();
-  const double speed2_limit = 0.98 * parameters_.c0 * parameters_.c0;
-  const double rho_min = 0.5 * parameters_.rho0, rho_max = 2.0 * parameters_.rho0;
+  const double c0 = parameters_.c0, rho_min = 0.5 * parameters_.rho0,
+               rho_max = 2.0 * parameters_.rho0;
   return sph::parallel_any(P.size(), sph::worth_threads(P.size()), [&](long i) {
-    const double v_x = v[2 * i], v_y = v[2 * i + 1];
-    const bool sound = (x[2 * i] * 0.0 == 0.0) & (x[2 * i + 1] * 0.0 == 0.0) &
-                       (v_x * v_x + v_y * v_y <= speed2_limit) & (rho[i] >= rho_min) &
-                       (rho[i] <= rho_max);
+    const bool sound = screen::finite_vector(x, i) & screen::clearly_slower(v, i, c0) &
+                       screen::within(rho[i], rho_min, rho_max);
     return (kind[i] == Kind::water) & !sound;
   });
 }

@@ -83,7 +83,7 @@ class FluidSolver {
   void update_pressure();
   void check_state() const;
   // False when every particle passes runaway_reason's tests with room to
-  // spare (a cheap screen); true when one may fail them.
+  // spare (a cheap screen, sph::screen); true when one may fail them.
   bool may_have_run_away() const;
   // Why particle i's state is not physical, or nullptr if it is (or is a wall).
   const char* runaway_reason(std::size_t i) const;

@@ -13,6 +13,7 @@
 #include "sphcore/parallel.hpp"
 #include "sphcore/permutation.hpp"
 #include "sphcore/runaway_error.hpp"
+#include "sphcore/runaway_screen.hpp"
 #include "von_mises_failure.hpp"
 #include "wall_contact.hpp"
 
@@ -158,23 +159,17 @@ std::vector<sph::Gauge> SolidSolver::gauge_values() const {
 }
 
 bool SolidSolver::may_have_run_away() const {
+  namespace screen = sph::screen;
   const SolidParticles& P = particles_;
-  // Plain arrays, and & rather than &&: through Eigen's types, or with a
-  // branch per test, the loop does not vectorise. x * 0 is 0 for finite x
-  // only; a speed within 1 % of c is left to check_state to judge exactly.
-  const double* const x = P.x.data()->data();
-  const double* const v = P.v.data()->data();
-  const double* const s = P.s.data()->data();
+  const double* const x = screen::doubles(P.x);
+  const double* const v = screen::doubles(P.v);
+  const double* const s = screen::doubles(P.s);
   const double* const rho = P.rho.data();
   const double* const c = P.c.data();
   const double rho_min = 0.5 * parameters_.rho0, rho_max = 2.0 * parameters_.rho0;
   return sph::parallel_any(P.size(), sph::kTeamAtAnySize, [&](long i) {
-    const double v_x = v[2 * i], v_y = v[2 * i + 1];
-    const double s_sum = s[4 * i] + s[4 * i + 1] + s[4 * i + 2] + s[4 * i + 3];
-    const bool sound = (x[2 * i] * 0.0 == 0.0) & (x[2 * i + 1] * 0.0 == 0.0) &
-                       (s_sum * 0.0 == 0.0) & (v_x * v_x + v_y * v_y <= 0.98 * c[i] * c[i]) &
-                       (rho[i] >= rho_min) & (rho[i] <= rho_max);
-    return !sound;
+    return !(screen::finite_vector(x, i) & screen::finite_matrix(s, i) &
+             screen::clearly_slower(v, i, c[i]) & screen::within(rho[i], rho_min, rho_max));
   });
 }
 

@@ -80,7 +80,7 @@ class SolidSolver {
   void update_stress(Including including);
   void check_state() const;
   // False when every particle passes check_state's tests with room to spare
-  // (a cheap screen); true when one may fail them.
+  // (a cheap screen, sph::screen); true when one may fail them.
   bool may_have_run_away() const;
 
   std::vector<long> interface_index_;  // particle indices of the last collect_interface

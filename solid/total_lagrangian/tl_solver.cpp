@@ -1,6 +1,7 @@
 #include "tl_solver.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -8,6 +9,7 @@
 #include "sphcore/pair_terms.hpp"
 #include "sphcore/parallel.hpp"
 #include "sphcore/runaway_error.hpp"
+#include "sphcore/runaway_screen.hpp"
 #include "wall_contact.hpp"
 
 namespace cosph::solid::tl {
@@ -38,12 +40,10 @@ void TLSolver::update() {
 
 sph::StepLimits TLSolver::step_limits() const {
   const TLParticles& P = particles_;
-  double v_max2 = 0.0, a_max2 = 0.0, c_max = 0.0;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    v_max2 = std::max(v_max2, P.v[i].squaredNorm());
-    a_max2 = std::max(a_max2, P.a[i].squaredNorm());
-    c_max = std::max(c_max, P.c[i]);
-  }
+  const auto [v_max2, a_max2, c_max] =
+      sph::parallel_max(P.size(), std::array{0.0, 0.0, 0.0}, sph::kTeamAtAnySize, [&](long i) {
+        return std::array{P.v[i].squaredNorm(), P.a[i].squaredNorm(), P.c[i]};
+      });
   return sph::step_limits(parameters_.run.cfl, parameters_.h, c_max, std::sqrt(v_max2),
                           std::sqrt(a_max2), 0.0);
 }
@@ -119,7 +119,22 @@ std::vector<sph::Gauge> TLSolver::gauge_values() const {
   return values;
 }
 
+bool TLSolver::may_have_run_away() const {
+  namespace screen = sph::screen;
+  const TLParticles& P = particles_;
+  const double* const x = screen::doubles(P.x);
+  const double* const v = screen::doubles(P.v);
+  const double* const F = screen::doubles(P.F);
+  const double* const J = P.J.data();
+  const double* const c = P.c.data();
+  return sph::parallel_any(P.size(), sph::kTeamAtAnySize, [&](long i) {
+    return !(screen::finite_vector(x, i) & screen::finite_matrix(F, i) &
+             screen::clearly_slower(v, i, c[i]) & screen::within(J[i], 0.5, 2.0));
+  });
+}
+
 void TLSolver::check_state() const {
+  if (!may_have_run_away()) return;
   const TLParticles& P = particles_;
   for (std::size_t i = 0; i < P.size(); ++i) {
     const char* reason = nullptr;

@@ -66,6 +66,9 @@ class TLSolver {
 
  private:
   void check_state() const;
+  // False when every particle passes check_state's tests with room to spare
+  // (a cheap screen, sph::screen); true when one may fail them.
+  bool may_have_run_away() const;
 
   std::vector<long> interface_index_;  // particle indices of the last collect_interface
   SolidParameters parameters_;

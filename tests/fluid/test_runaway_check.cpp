@@ -1,18 +1,15 @@
-// The water's runaway check (FluidSolver::check_state) screens all particles
-// in one vectorised pass before it looks at any one of them. Every way a water
-// particle can run away must still stop the step, wherever the particle lies
-// in that pass (its first lane, the middle, the loop's remainder); a speed
-// between the screen's margin and the sound speed must not.
+// The water's runaway check (FluidSolver::check_state): every way a water
+// particle can run away stops the step; a speed between the screen's margin
+// and the sound speed does not.
 #include <gtest/gtest.h>
 
-#include <functional>
 #include <limits>
 #include <vector>
 
 #include "fluid_parameters.hpp"
 #include "fluid_solver.hpp"
+#include "runaway_spoils.hpp"
 #include "sphcore/case_file.hpp"
-#include "sphcore/runaway_error.hpp"
 #include "test_support.hpp"
 
 namespace cosph::fluid {
@@ -36,11 +33,7 @@ TEST(FluidSolver, EveryKindOfRunawayStopsTheStepAndNothingElseDoes) {
   const sph::CaseFile case_file = sph::load_case(scratch.file("tank.pbtxt"));
   const FluidParameters par = read_fluid_parameters(case_file);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  struct Spoil {
-    const char* what;
-    std::function<void(FluidParticles&, std::size_t)> apply;
-    bool stops;
-  };
+  using Spoil = cosph::testing::Spoil<FluidParticles>;
   const std::vector<Spoil> spoils{
       {"x not finite", [&](FluidParticles& P, std::size_t i) { P.x[i].x() = nan; }, true},
       {"v not finite", [&](FluidParticles& P, std::size_t i) { P.v[i].y() = nan; }, true},
@@ -53,22 +46,16 @@ TEST(FluidSolver, EveryKindOfRunawayStopsTheStepAndNothingElseDoes) {
       {"just below c0",
        [&](FluidParticles& P, std::size_t i) { P.v[i] = Vec2(0.8, -0.6) * 0.995 * par.c0; }, false},
   };
+  const auto make_solver = [&] { return FluidSolver(case_file, par); };
   std::vector<std::size_t> water;
   {
-    const FluidSolver solver(case_file, par);
+    const FluidSolver solver = make_solver();
     for (std::size_t i = 0; i < solver.particles().size(); ++i)
       if (solver.particles().is_water(i)) water.push_back(i);
   }
   ASSERT_GT(water.size(), 2u);
-  for (const std::size_t i : {water.front(), water[water.size() / 2], water.back()})
-    for (const Spoil& spoil : spoils) {
-      FluidSolver solver(case_file, par);
-      spoil.apply(solver.particles(), i);
-      if (spoil.stops)
-        EXPECT_THROW(solver.end_step(0.0), sph::RunawayError) << spoil.what << ", particle " << i;
-      else
-        EXPECT_NO_THROW(solver.end_step(0.0)) << spoil.what << ", particle " << i;
-    }
+  cosph::testing::expect_exactly_the_runaways_stop(
+      make_solver, spoils, {water.front(), water[water.size() / 2], water.back()});
 }
 
 }  // namespace

@@ -9,18 +9,17 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <functional>
 #include <limits>
 #include <sstream>
 #include <vector>
 
 #include "bending_mode.hpp"
 #include "jaumann_rate.hpp"
+#include "runaway_spoils.hpp"
 #include "solid_dynamics.hpp"
 #include "solid_solver.hpp"
 #include "solid_test_cases.hpp"
 #include "sphcore/permutation.hpp"
-#include "sphcore/runaway_error.hpp"
 #include "thread_count.hpp"
 #include "von_mises_failure.hpp"
 
@@ -200,20 +199,13 @@ TEST(CosphSolid, RunawayStopsWithLastGoodSnapshot) {
   EXPECT_TRUE(std::filesystem::exists(out + "/solid_last_good.h5"));
 }
 
-// check_state screens all particles in one vectorised pass before it looks at
-// any one of them. Every way a particle can run away must still stop the step,
-// wherever the particle lies in that pass (its first lane, the middle, the
-// loop's remainder); a speed between the screen's margin and the sound speed
-// must not.
+// Every way a particle can run away stops the step; a speed between the
+// screen's margin and the sound speed does not.
 TEST(SolidSolver, EveryKindOfRunawayStopsTheStepAndNothingElseDoes) {
   const sph::CaseFile case_file = sph::load_case(testing::write_case("block", kBlock));
   const SolidParameters par = read_solid_parameters(case_file);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  struct Spoil {
-    const char* what;
-    std::function<void(SolidParticles&, std::size_t)> apply;
-    bool stops;
-  };
+  using Spoil = cosph::testing::Spoil<SolidParticles>;
   const std::vector<Spoil> spoils{
       {"x not finite", [&](SolidParticles& P, std::size_t i) { P.x[i].y() = nan; }, true},
       {"v infinite",
@@ -231,16 +223,9 @@ TEST(SolidSolver, EveryKindOfRunawayStopsTheStepAndNothingElseDoes) {
       {"just below c",
        [](SolidParticles& P, std::size_t i) { P.v[i] = Vec2(0.6, 0.8) * 0.995 * P.c[i]; }, false},
   };
-  const std::size_t n = SolidSolver(case_file, par).particles().size();
-  for (const std::size_t i : {std::size_t{0}, n / 2, n - 1})
-    for (const Spoil& spoil : spoils) {
-      SolidSolver solver(case_file, par);
-      spoil.apply(solver.particles(), i);
-      if (spoil.stops)
-        EXPECT_THROW(solver.end_step(0.0), sph::RunawayError) << spoil.what << ", particle " << i;
-      else
-        EXPECT_NO_THROW(solver.end_step(0.0)) << spoil.what << ", particle " << i;
-    }
+  const auto make_solver = [&] { return SolidSolver(case_file, par); };
+  const std::size_t n = make_solver().particles().size();
+  cosph::testing::expect_exactly_the_runaways_stop(make_solver, spoils, {0, n / 2, n - 1});
 }
 
 }  // namespace

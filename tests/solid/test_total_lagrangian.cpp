@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <random>
 #include <sstream>
 #include <string>
@@ -18,6 +19,7 @@
 #include "bending_mode.hpp"
 #include "hooke_pressure.hpp"
 #include "reference_configuration.hpp"
+#include "runaway_spoils.hpp"
 #include "solid_test_cases.hpp"
 #include "st_venant_kirchhoff.hpp"
 #include "tl_solver.hpp"
@@ -222,6 +224,26 @@ TEST(CosphSolidTl, RunawayStopsWithLastGoodSnapshot) {
 // (wall_contact.hpp, test_fracture.cpp): a block dropped onto a floor rests
 // on it, half a spacing above its face, instead of falling through; and
 // solid.broken_part_below_y gives it the broken_x, broken_y columns.
+// Every way a particle can run away stops the step; a speed between the
+// screen's margin and the sound speed does not.
+TEST(TotalLagrangian, EveryKindOfRunawayStopsTheStepAndNothingElseDoes) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  using Spoil = cosph::testing::Spoil<TLParticles>;
+  const std::vector<Spoil> spoils{
+      {"x not finite", [&](TLParticles& P, std::size_t i) { P.x[i].x() = nan; }, true},
+      {"v not finite", [&](TLParticles& P, std::size_t i) { P.v[i].y() = nan; }, true},
+      {"F not finite", [&](TLParticles& P, std::size_t i) { P.F[i](0, 1) = nan; }, true},
+      {"J below 0.5", [](TLParticles& P, std::size_t i) { P.J[i] = 0.49; }, true},
+      {"J above 2", [](TLParticles& P, std::size_t i) { P.J[i] = 2.01; }, true},
+      {"faster than c",
+       [](TLParticles& P, std::size_t i) { P.v[i] = Vec2(0.6, 0.8) * 1.001 * P.c[i]; }, true},
+      {"just below c",
+       [](TLParticles& P, std::size_t i) { P.v[i] = Vec2(0.6, 0.8) * 0.995 * P.c[i]; }, false},
+  };
+  const std::size_t n = block_solver().particles().size();
+  cosph::testing::expect_exactly_the_runaways_stop(block_solver, spoils, {0, n / 2, n - 1});
+}
+
 TEST(TotalLagrangianCaseFields, DroppedBlockRestsOnTheFloorAndIsGauged) {
   const sph::CaseFile case_file = sph::load_case(testing::dropped_block_case(
       "tl_dropped", "  model: \"total_lagrangian\"\n  broken_part_below_y: 0.04"));
