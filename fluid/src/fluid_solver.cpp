@@ -126,10 +126,7 @@ void FluidSolver::set_interface_density_rates(const std::vector<double>& density
 }
 
 sph::Region FluidSolver::interaction_bounds() const {
-  sph::Region bounds;
-  for (std::size_t i = 0; i < particles_.size(); ++i)
-    if (particles_.is_water(i)) bounds.include(particles_.x[i]);
-  return bounds;
+  return sph::bounds_of(particles_.x, [this](long i) { return particles_.is_water(i); });
 }
 
 std::vector<sph::Gauge> FluidSolver::gauge_values() const {

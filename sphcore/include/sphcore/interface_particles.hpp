@@ -35,11 +35,30 @@ struct Region {
   }
 };
 
-// The box around every position: a solver's interaction bounds.
+// The box around the positions i with included(i): a solver's interaction
+// bounds, which it sends every coupled step. One pass over the plain
+// coordinates, which vectorises (a loop of Region::include does not); a
+// position left out counts as +-infinity.
+template <class Included>
+Region bounds_of(const std::vector<Vec2>& positions, Included&& included) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const double* const x = positions.data()->data();
+  const long n = static_cast<long>(positions.size());
+  double min_x = inf, min_y = inf, max_x = -inf, max_y = -inf;
+#pragma omp simd reduction(min : min_x, min_y) reduction(max : max_x, max_y)
+  for (long i = 0; i < n; ++i) {
+    const bool in = included(i);
+    min_x = std::min(min_x, in ? x[2 * i] : inf);
+    min_y = std::min(min_y, in ? x[2 * i + 1] : inf);
+    max_x = std::max(max_x, in ? x[2 * i] : -inf);
+    max_y = std::max(max_y, in ? x[2 * i + 1] : -inf);
+  }
+  return {Vec2(min_x, min_y), Vec2(max_x, max_y)};
+}
+
+// The box around every position.
 inline Region bounds_of(const std::vector<Vec2>& positions) {
-  Region bounds;
-  for (const Vec2& x : positions) bounds.include(x);
-  return bounds;
+  return bounds_of(positions, [](long) { return true; });
 }
 
 struct InterfaceParticles {
