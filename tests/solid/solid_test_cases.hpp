@@ -2,6 +2,8 @@
 // through the same reading and validation as a user's case.
 #pragma once
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -13,9 +15,14 @@ inline std::string temporary_path(const std::string& name) {
   return (std::filesystem::temp_directory_path() / ("cosph_solid_test_" + name)).string();
 }
 
+// Written whole and then renamed into place: tests in other processes (ctest
+// -j) write and read the same case at the same time, and must never see it
+// half written.
 inline std::string write_case(const std::string& name, const std::string& text) {
   const std::string path = temporary_path(name + ".pbtxt");
-  std::ofstream(path) << text;
+  const std::string part = path + "." + std::to_string(::getpid()) + ".part";
+  std::ofstream(part) << text;
+  std::filesystem::rename(part, path);
   return path;
 }
 
