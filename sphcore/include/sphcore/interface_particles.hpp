@@ -41,6 +41,7 @@ struct Region {
 // position left out counts as +-infinity.
 template <class Included>
 Region bounds_of(const std::vector<Vec2>& positions, Included&& included) {
+  if (positions.empty()) return {};
   const double inf = std::numeric_limits<double>::infinity();
   const double* const x = positions.data()->data();
   const long n = static_cast<long>(positions.size());

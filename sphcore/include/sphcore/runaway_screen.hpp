@@ -12,12 +12,12 @@
 
 namespace sph::screen {
 
-// The doubles behind a vector of 2-vectors or 2x2 matrices.
+// The doubles behind a vector of 2-vectors or 2x2 matrices (none when it is empty).
 inline const double* doubles(const std::vector<Vec2>& values) {
-  return values.data()->data();
+  return values.empty() ? nullptr : values.data()->data();
 }
 inline const double* doubles(const std::vector<Mat2>& values) {
-  return values.data()->data();
+  return values.empty() ? nullptr : values.data()->data();
 }
 
 // x * 0 is 0 for finite x only.
@@ -38,8 +38,9 @@ inline bool finite_matrix(const double* matrices, long i) {
   return finite((m[0] + m[1]) + (m[2] + m[3]));
 }
 
-// |v_i| clearly below `limit`: within 2 % of it, the exact test (on the norm,
-// rounded differently from the square) decides. False for a v that is not finite.
+// |v_i| clearly below `limit`: |v_i|^2 <= 0.98 limit^2. Within 1 % of the
+// limit, the exact test (on the norm, rounded differently from the square)
+// decides. False for a v that is not finite.
 inline bool clearly_slower(const double* velocities, long i, double limit) {
   const double v_x = velocities[2 * i], v_y = velocities[2 * i + 1];
   return v_x * v_x + v_y * v_y <= 0.98 * limit * limit;
