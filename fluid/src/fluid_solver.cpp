@@ -145,7 +145,8 @@ const char* FluidSolver::runaway_reason(std::size_t i) const {
     return "its state is not finite";
   if (P.v[i].norm() > parameters_.c0)
     return "it moves faster than the sound speed c0 (weak compressibility is lost)";
-  if (P.rho[i] < 0.5 * parameters_.rho0 || P.rho[i] > 2.0 * parameters_.rho0)
+  if (!sph::screen::within(P.rho[i], sph::screen::kLowest * parameters_.rho0,
+                           sph::screen::kHighest * parameters_.rho0))
     return "its density left [0.5, 2] rho0";
   return nullptr;
 }
@@ -153,12 +154,12 @@ const char* FluidSolver::runaway_reason(std::size_t i) const {
 bool FluidSolver::may_have_run_away() const {
   namespace screen = sph::screen;
   const FluidParticles& P = particles_;
-  const double* const x = screen::doubles(P.x);
-  const double* const v = screen::doubles(P.v);
+  const double* const x = sph::doubles_of(P.x);
+  const double* const v = sph::doubles_of(P.v);
   const double* const rho = P.rho.data();
   const Kind* const kind = P.kind.data();
-  const double c0 = parameters_.c0, rho_min = 0.5 * parameters_.rho0,
-               rho_max = 2.0 * parameters_.rho0;
+  const double c0 = parameters_.c0, rho_min = screen::kLowest * parameters_.rho0,
+               rho_max = screen::kHighest * parameters_.rho0;
   return sph::parallel_any(P.size(), sph::worth_threads(P.size()), [&](long i) {
     const bool sound = screen::finite_vector(x, i) & screen::clearly_slower(v, i, c0) &
                        screen::within(rho[i], rho_min, rho_max);

@@ -161,12 +161,13 @@ std::vector<sph::Gauge> SolidSolver::gauge_values() const {
 bool SolidSolver::may_have_run_away() const {
   namespace screen = sph::screen;
   const SolidParticles& P = particles_;
-  const double* const x = screen::doubles(P.x);
-  const double* const v = screen::doubles(P.v);
-  const double* const s = screen::doubles(P.s);
+  const double* const x = sph::doubles_of(P.x);
+  const double* const v = sph::doubles_of(P.v);
+  const double* const s = sph::doubles_of(P.s);
   const double* const rho = P.rho.data();
   const double* const c = P.c.data();
-  const double rho_min = 0.5 * parameters_.rho0, rho_max = 2.0 * parameters_.rho0;
+  const double rho_min = screen::kLowest * parameters_.rho0,
+               rho_max = screen::kHighest * parameters_.rho0;
   return sph::parallel_any(P.size(), sph::kTeamAtAnySize, [&](long i) {
     return !(screen::finite_vector(x, i) & screen::finite_matrix(s, i) &
              screen::clearly_slower(v, i, c[i]) & screen::within(rho[i], rho_min, rho_max));
@@ -184,7 +185,8 @@ void SolidSolver::check_state() const {
       reason = "its state is not finite";
     else if (P.v[i].norm() > P.c[i])
       reason = "it moves faster than the solid's sound speed";
-    else if (P.rho[i] < 0.5 * rho0 || P.rho[i] > 2.0 * rho0)
+    else if (!sph::screen::within(P.rho[i], sph::screen::kLowest * rho0,
+                                  sph::screen::kHighest * rho0))
       reason = "its density left [0.5, 2] rho0 (far outside linear elasticity)";
     if (reason == nullptr) continue;
     std::ostringstream message;

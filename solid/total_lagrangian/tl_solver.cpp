@@ -122,14 +122,15 @@ std::vector<sph::Gauge> TLSolver::gauge_values() const {
 bool TLSolver::may_have_run_away() const {
   namespace screen = sph::screen;
   const TLParticles& P = particles_;
-  const double* const x = screen::doubles(P.x);
-  const double* const v = screen::doubles(P.v);
-  const double* const F = screen::doubles(P.F);
+  const double* const x = sph::doubles_of(P.x);
+  const double* const v = sph::doubles_of(P.v);
+  const double* const F = sph::doubles_of(P.F);
   const double* const J = P.J.data();
   const double* const c = P.c.data();
   return sph::parallel_any(P.size(), sph::kTeamAtAnySize, [&](long i) {
     return !(screen::finite_vector(x, i) & screen::finite_matrix(F, i) &
-             screen::clearly_slower(v, i, c[i]) & screen::within(J[i], 0.5, 2.0));
+             screen::clearly_slower(v, i, c[i]) &
+             screen::within(J[i], screen::kLowest, screen::kHighest));
   });
 }
 
@@ -142,7 +143,7 @@ void TLSolver::check_state() const {
       reason = "its state is not finite";
     else if (P.v[i].norm() > P.c[i])
       reason = "it moves faster than the solid's sound speed";
-    else if (!(P.J[i] >= 0.5 && P.J[i] <= 2.0))
+    else if (!sph::screen::within(P.J[i], sph::screen::kLowest, sph::screen::kHighest))
       reason = "its volume ratio J = det F left [0.5, 2] (far outside linear elasticity)";
     if (reason == nullptr) continue;
     std::ostringstream message;

@@ -29,16 +29,9 @@ const char* phase_name(Phase phase);
 Region to_proto(const sph::Region& region);
 sph::Region from_proto(const Region& region);
 
-// The doubles of 2-vectors stored one after the other (x, y per vector), the
-// layout of the messages' packed arrays, so that those are copied whole
-// rather than value by value.
-static_assert(sizeof(sph::Vec2) == 2 * sizeof(double));
-inline const double* doubles_of(const std::vector<sph::Vec2>& vectors) {
-  return vectors.empty() ? nullptr : vectors.front().data();
-}
-inline double* doubles_of(std::vector<sph::Vec2>& vectors) {
-  return vectors.empty() ? nullptr : vectors.front().data();
-}
+// The messages' packed arrays hold 2-vectors as sph::doubles_of lays them
+// out, so that they are copied whole rather than value by value.
+using sph::doubles_of;
 
 void to_proto(const sph::InterfaceParticles& particles, InterfaceState& state);
 // Throws CouplingError if the arrays do not have one entry per particle.

@@ -41,9 +41,8 @@ struct Region {
 // position left out counts as +-infinity.
 template <class Included>
 Region bounds_of(const std::vector<Vec2>& positions, Included&& included) {
-  if (positions.empty()) return {};
   const double inf = std::numeric_limits<double>::infinity();
-  const double* const x = positions.data()->data();
+  const double* const x = doubles_of(positions);
   const long n = static_cast<long>(positions.size());
   double min_x = inf, min_y = inf, max_x = -inf, max_y = -inf;
 #pragma omp simd reduction(min : min_x, min_y) reduction(max : max_x, max_y)

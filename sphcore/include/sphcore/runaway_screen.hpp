@@ -1,24 +1,19 @@
-// The tests of a runaway check (sph::RunawayError), written for a screen: one
-// pass over all particles, on the plain arrays behind Eigen's 2-vectors and
-// 2x2 matrices, that the compiler vectorises (through Eigen's types it would
-// not). Each test gives a bool without a branch, to be combined with &, and
-// clears a particle only where the exact test clears it too; a solver looks
-// at single particles only when its screen fails.
+// The tests of a runaway check (sph::RunawayError), written for a screen:
+// one pass over all particles, on the plain arrays behind Eigen's 2-vectors
+// and 2x2 matrices (sph::doubles_of), that the compiler vectorises. Each test
+// gives a bool without a branch, to be combined with &, and clears a particle
+// only where the exact test clears it too; a solver looks at single particles
+// only when its screen fails.
 #pragma once
-
-#include <vector>
 
 #include "sphcore/types.hpp"
 
 namespace sph::screen {
 
-// The doubles behind a vector of 2-vectors or 2x2 matrices (none when it is empty).
-inline const double* doubles(const std::vector<Vec2>& values) {
-  return values.empty() ? nullptr : values.data()->data();
-}
-inline const double* doubles(const std::vector<Mat2>& values) {
-  return values.empty() ? nullptr : values.data()->data();
-}
+// A density, or a volume ratio J, outside [kLowest, kHighest] times its rest
+// value is far outside weak compressibility or linear elasticity: the run
+// has blown up. The exact tests and the screens both use these bounds.
+inline constexpr double kLowest = 0.5, kHighest = 2.0;
 
 // x * 0 is 0 for finite x only.
 inline bool finite(double value) {

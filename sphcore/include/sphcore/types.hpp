@@ -2,10 +2,26 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <vector>
 
 namespace sph {
 
 using Vec2 = Eigen::Vector2d;
 using Mat2 = Eigen::Matrix2d;
+
+// The doubles of 2-vectors (x, y per vector) or 2x2 matrices (4 per matrix,
+// column by column) stored one after the other, for loops over plain arrays:
+// copied whole into a message's packed array, or read by a loop that the
+// compiler vectorises (through Eigen's types it would not). None when empty.
+static_assert(sizeof(Vec2) == 2 * sizeof(double) && sizeof(Mat2) == 4 * sizeof(double));
+inline const double* doubles_of(const std::vector<Vec2>& vectors) {
+  return vectors.empty() ? nullptr : vectors.front().data();
+}
+inline double* doubles_of(std::vector<Vec2>& vectors) {
+  return vectors.empty() ? nullptr : vectors.front().data();
+}
+inline const double* doubles_of(const std::vector<Mat2>& matrices) {
+  return matrices.empty() ? nullptr : matrices.front().data();
+}
 
 }  // namespace sph
