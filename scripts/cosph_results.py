@@ -30,6 +30,11 @@ def read_csv(path):
     return {name: data[:, k] for k, name in enumerate(names)}
 
 
+def spray_removed(series):
+    """Water particles that left a run as thinned spray (README "Spray"), as text."""
+    return f"{int(series['spray_removed'][-1])}" if "spray_removed" in series else "-"
+
+
 def reference(name):
     return read_csv(os.path.join(REFERENCE, name))
 

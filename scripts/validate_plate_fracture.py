@@ -195,7 +195,7 @@ def main():
                      f"{free:.2f}" if free is not None else "not free",
                      int(failed[-1]), f"{series['broken_x'][-1]:.3f}",
                      f"{series['broken_y'][-1]:.3f}",
-                     f"{wall:.0f}" if wall is not None else "?"])
+                     f"{wall:.0f}" if wall is not None else "?", cr.spray_removed(series)])
         if failure:
             preamble.append(f"**{label} stopped early:** {failure}")
         style = "-" if suffix == "sync" else "--"
@@ -234,7 +234,8 @@ def main():
         "solid/src/wall_contact.hpp); without it the piece fell through the floor.")
     path = cr.write_table(CASE, ["run", "reached t (s)", "first failure t (s)", "piece free by t (s)",
                                  "failed at end", "broken_x at end (m)", "broken_y at end (m)",
-                                 "wall time (s)"], rows, "\n\n".join(preamble))
+                                 "wall time (s)", "water left as spray"], rows,
+                           "\n\n".join(preamble))
     print(open(path).read())
 
 

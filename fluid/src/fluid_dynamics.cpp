@@ -35,6 +35,7 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
   const double diffusion = par.delta * par.h * par.c0;
   P.grad_rho_next.resize(P.size());
   P.volume.resize(P.size());
+  P.spray.resize(P.size());
 #pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
   for (long i = 0; i < n; ++i) P.volume[i] = P.m[i] / P.rho[i];
 
@@ -46,6 +47,7 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
     sph::GradientSums sums;
     Vec2 grad_rho_raw = Vec2::Zero();
     double drho_i = 0.0, diffusion_i = 0.0;
+    bool wall_in_reach = false;
     const auto neighbours = pairs.neighbours(i);
     const auto F = pairs.gradient_factors(i);
     for (std::size_t k = 0; k < neighbours.size(); ++k) {
@@ -55,7 +57,10 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
       const double rho_j = P.rho[j], V_j = P.volume[j];
       const Vec2 v_ij = v_i - P.v[j];
       drho_i += continuity_pair(rho_i, V_j, v_ij, grad_W_ij);
-      if (!P.is_water(j)) continue;
+      if (!P.is_water(j)) {
+        wall_in_reach = true;
+        continue;
+      }
       diffusion_i +=
           density_diffusion_pair(rho_i, rho_j, F[k], grad_rho_i, P.grad_rho[j], V_j, grad_W_ij);
       const Vec2 Vg = V_j * grad_W_ij;
@@ -64,6 +69,7 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
     }
     const Mat2 M = sums.M(), grad_v_raw = sums.raw_velocity_gradient();
     P.drho[i] = drho_i + diffusion * diffusion_i;
+    P.spray[i] = !wall_in_reach && !sph::can_renormalise(M);
     const Mat2 L = sph::renormalisation_matrix(M);
     P.grad_rho_next[i] = L * grad_rho_raw;
     P.tau[i] = viscous_stress(par.mu, grad_v_raw * L.transpose());

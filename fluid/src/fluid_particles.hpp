@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "momentum.hpp"
+#include "sphcore/permutation.hpp"
 #include "sphcore/types.hpp"
 
 namespace cosph::fluid {
@@ -37,6 +38,10 @@ struct FluidParticles {
   std::vector<double> drho;            // drho/dt
   std::vector<Vec2> external_a;        // acceleration from outside the fluid (coupling)
   std::vector<double> external_drho;   // density rate from outside (a moving solid wall)
+  // 1 for spray: no wall in reach, and the water around the particle too
+  // sparse to renormalise (sph::can_renormalise): a droplet of a few
+  // particles, or a jet or a sheet one particle thick.
+  std::vector<std::uint8_t> spray;
 
   std::size_t size() const { return x.size(); }
   bool is_water(std::size_t i) const { return kind[i] == Kind::water; }
@@ -61,6 +66,14 @@ struct FluidParticles {
     drho.assign(n, 0.0);
     external_a.assign(n, Vec2::Zero());
     external_drho.assign(n, 0.0);
+    spray.assign(n, 0);
+  }
+
+  // Keeps the particles kept[0], kept[1], ... in that order; the others leave
+  // with everything known of them.
+  void keep_only(const std::vector<int>& kept) {
+    sph::keep_only(kept, id, kind, x, v, rho, m, grad_rho, p, tau, sigma, inverse_rho,
+                   grad_rho_next, volume, a, drho, external_a, external_drho, spray);
   }
 };
 

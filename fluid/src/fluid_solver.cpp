@@ -19,7 +19,8 @@ FluidSolver::FluidSolver(const sph::CaseFile& case_file, const FluidParameters& 
     : parameters_(parameters),
       eos_(parameters.rho0, parameters.c0),
       particles_(build_fluid_scene(case_file, parameters)),
-      skin_(sph::kSkinOverH * parameters.h) {
+      skin_(sph::kSkinOverH * parameters.h),
+      water_at_start_(std::count(particles_.kind.begin(), particles_.kind.end(), Kind::water)) {
   find_neighbours(true);
   compute_continuity_and_gradients(particles_, pairs_, parameters_);  // only for grad_rho
   update_pressure();
@@ -81,7 +82,8 @@ void FluidSolver::advance_state(double dt) {
     return (P.x[i] - x_at_sort_[i]).squaredNorm();
   });
   const double rebuild_at = sph::verlet_rebuild_distance(parameters_.h);
-  find_neighbours(moved2 > rebuild_at * rebuild_at);
+  find_neighbours(spray_left_ || moved2 > rebuild_at * rebuild_at);
+  spray_left_ = false;
   compute_continuity_and_gradients(P, pairs_, parameters_);
   sph::parallel_for(P.size(), [&](long i) {
     if (P.is_water(i)) P.rho[i] += dt * P.drho[i];
@@ -102,7 +104,37 @@ void FluidSolver::end_step(double dt) {
   });
   time_ += dt;
   ++steps_;
+  if (may_have_run_away()) remove_thinned_spray();
   check_state();
+}
+
+bool FluidSolver::is_thinned_spray(std::size_t i) const {
+  const FluidParticles& P = particles_;
+  return P.is_water(i) && P.spray[i] &&
+         P.rho[i] < sph::screen::kLowest * parameters_.rho0;
+}
+
+void FluidSolver::remove_thinned_spray() {
+  FluidParticles& P = particles_;
+  std::vector<int> kept;
+  kept.reserve(P.size());
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (!is_thinned_spray(i)) kept.push_back(static_cast<int>(i));
+  if (kept.size() == P.size()) return;
+  spray_removed_ += static_cast<long>(P.size() - kept.size());
+  // Spray is a small part of the water; when more thins, the flow has blown up.
+  constexpr long kMostSprayPercent = 1;
+  if (100 * spray_removed_ > kMostSprayPercent * water_at_start_) {
+    std::ostringstream message;
+    message << "t = " << time_ << " s, step " << steps_ << ": " << spray_removed_ << " of "
+            << water_at_start_
+            << " water particles have thinned to spray below 0.5 rho0, more than 1 %"
+               " of the water; the run has blown up: try a smaller run.cfl";
+    throw sph::RunawayError(message.str());
+  }
+  P.keep_only(kept);
+  sph::keep_only(kept, x_at_sort_);
+  spray_left_ = true;  // the grid and the Verlet list still hold the old indices
 }
 
 void FluidSolver::collect_interface(const sph::Region& region, sph::InterfaceParticles& out) {
@@ -135,7 +167,8 @@ std::vector<sph::Gauge> FluidSolver::gauge_values() const {
           {"height", "m", g.height},
           {"kinetic_energy", "J/m", g.kinetic_energy},
           {"max_speed", "m/s", g.max_speed},
-          {"water_particles", "1", static_cast<double>(g.water_particles)}};
+          {"water_particles", "1", static_cast<double>(g.water_particles)},
+          {"spray_removed", "1", static_cast<double>(spray_removed_)}};
 }
 
 const char* FluidSolver::runaway_reason(std::size_t i) const {
@@ -145,6 +178,7 @@ const char* FluidSolver::runaway_reason(std::size_t i) const {
     return "its state is not finite";
   if (P.v[i].norm() > parameters_.c0)
     return "it moves faster than the sound speed c0 (weak compressibility is lost)";
+  if (is_thinned_spray(i)) return nullptr;  // it leaves the water at the end of the step
   if (!sph::screen::within(P.rho[i], sph::screen::kLowest * parameters_.rho0,
                            sph::screen::kHighest * parameters_.rho0))
     return "its density left [0.5, 2] rho0";
@@ -196,6 +230,7 @@ sph::Snapshot FluidSolver::snapshot() const {
   snapshot.add_scalar("pressure", P.p);
   snapshot.add_vector("acceleration", P.a);
   snapshot.add_scalar("drho", P.drho);
+  snapshot.add_scalar("spray", std::vector<int>(P.spray.begin(), P.spray.end()));
   return snapshot;
 }
 

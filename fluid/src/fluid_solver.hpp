@@ -66,6 +66,8 @@ class FluidSolver {
   long steps() const { return steps_; }
   // How many times the particles were sorted and the Verlet list rebuilt.
   long sorts() const { return sorts_; }
+  // Water particles that left as thinned spray (is_thinned_spray).
+  long spray_removed() const { return spray_removed_; }
   const FluidParticles& particles() const { return particles_; }
   // For tests that set up a state the case cannot describe; the next step
   // recomputes everything derived from it.
@@ -85,18 +87,32 @@ class FluidSolver {
   // False when every particle passes runaway_reason's tests with room to
   // spare (a cheap screen, sph::screen); true when one may fail them.
   bool may_have_run_away() const;
-  // Why particle i's state is not physical, or nullptr if it is (or is a wall).
+  // Why particle i's state is not physical, or nullptr if it is (or is a wall,
+  // or thinned spray).
   const char* runaway_reason(std::size_t i) const;
+  // Water thinned below the runaway density bound where its support is too
+  // sparse to renormalise: spray thrown off the flow, a droplet of a few
+  // particles or a sheet one particle thick. Continuity keeps thinning such a
+  // particle as its few neighbours fly apart, yet a real droplet keeps the
+  // density of water: the value has lost its meaning, so it is no sign of a
+  // blow-up. Such a particle leaves the water at the end of its step
+  // (DualSPHysics likewise excludes particles whose density leaves a range);
+  // the timeseries counts them. More than 1 % of the water is a blow-up.
+  bool is_thinned_spray(std::size_t i) const;
+  void remove_thinned_spray();
 
   std::vector<long> interface_index_;  // particle indices of the last collect_interface
   FluidParameters parameters_;
   TaitEquationOfState eos_;
   FluidParticles particles_;
   double skin_;                    // of the Verlet list (sph::kSkinOverH)
+  long water_at_start_;
   sph::CellGrid grid_;             // built for 2h + skin at the last sort
   sph::CandidateList candidates_;  // the Verlet list of the last sort
   std::vector<Vec2> x_at_sort_;    // positions at the last sort
   long sorts_ = 0;
+  bool spray_left_ = false;  // particles left since the last sort
+  long spray_removed_ = 0;
   sph::NeighbourList pairs_;
   double time_ = 0.0;
   long steps_ = 0;

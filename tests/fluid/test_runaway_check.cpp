@@ -1,9 +1,11 @@
 // The water's runaway check (FluidSolver::check_state): every way a water
 // particle can run away stops the step; a speed between the screen's margin
-// and the sound speed does not.
+// and the sound speed does not, and thinned spray leaves the water instead.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "fluid_parameters.hpp"
@@ -56,6 +58,89 @@ TEST(FluidSolver, EveryKindOfRunawayStopsTheStepAndNothingElseDoes) {
   ASSERT_GT(water.size(), 2u);
   cosph::testing::expect_exactly_the_runaways_stop(
       make_solver, spoils, {water.front(), water[water.size() / 2], water.back()});
+}
+
+// A tank like kTank, with walls high enough to hold a droplet of four
+// particles (at spacing 0.005) far above the water: out of reach of the water
+// and of the walls.
+constexpr const char* kTankAndDroplet = R"(
+run { end_time: 0.1 gravity { x: 0 y: -9.81 } }
+fluid {
+  spacing: 0.005
+  density: 1000
+  water { min { x: 0 y: 0 } max { x: 0.1 y: 0.05 } }
+  water { min { x: 0.045 y: 0.15 } max { x: 0.055 y: 0.16 } }
+  walls { min { x: -0.03 y: -0.03 } max { x: 0.13 y: 0 } }
+  walls { min { x: -0.03 y: 0 } max { x: 0 y: 0.2 } }
+  walls { min { x: 0.1 y: 0 } max { x: 0.13 y: 0.2 } }
+}
+)";
+
+struct TankAndDroplet {
+  sph::CaseFile case_file;
+  FluidParameters par;
+};
+
+TankAndDroplet load_tank_and_droplet(const cosph::testing::ScratchDir& scratch,
+                                     const std::vector<std::string>& overrides = {}) {
+  cosph::testing::write_text(scratch.file("tank.pbtxt"), kTankAndDroplet);
+  sph::CaseFile case_file = sph::load_case(scratch.file("tank.pbtxt"), overrides);
+  FluidParameters par = read_fluid_parameters(case_file);
+  return {std::move(case_file), par};
+}
+
+std::vector<std::size_t> droplet_particles(const FluidParticles& P) {
+  std::vector<std::size_t> droplet;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (P.is_water(i) && P.x[i].y() > 0.1) droplet.push_back(i);
+  return droplet;
+}
+
+TEST(FluidSolver, ThinnedSprayLeavesTheWaterAndIsCounted) {
+  const cosph::testing::ScratchDir scratch("thinned_spray");
+  const auto [case_file, par] = load_tank_and_droplet(scratch);
+  FluidSolver solver(case_file, par);
+  const long water = solver.gauges().water_particles;
+  ASSERT_GE(water, 200);  // so that one particle is under 1 % of the water
+  const std::vector<std::size_t> droplet = droplet_particles(solver.particles());
+  ASSERT_EQ(droplet.size(), 4u);
+  // Only the droplet is spray: the tank's water has walls or dense water in reach.
+  for (std::size_t i = 0; i < solver.particles().size(); ++i) {
+    if (!solver.particles().is_water(i)) continue;
+    EXPECT_EQ(solver.particles().spray[i] == 1, solver.particles().x[i].y() > 0.1) << i;
+  }
+
+  FluidParticles& P = solver.particles();
+  const int thinned = P.id[droplet[1]];
+  P.rho[droplet[1]] = 0.49 * par.rho0;
+  ASSERT_NO_THROW(solver.end_step(0.0));
+  EXPECT_EQ(solver.spray_removed(), 1);
+  EXPECT_EQ(solver.gauges().water_particles, water - 1);
+  EXPECT_EQ(std::count(P.id.begin(), P.id.end(), thinned), 0);
+  EXPECT_EQ(droplet_particles(P).size(), 3u);
+  // The water goes on without it: the grid and the neighbour list are rebuilt.
+  ASSERT_NO_THROW(solver.step(0.1 * solver.step_limits().smallest()));
+  EXPECT_EQ(solver.gauges().water_particles, water - 1);
+}
+
+TEST(FluidSolver, SprayDenserThanTwiceRho0StillStops) {
+  const cosph::testing::ScratchDir scratch("dense_spray");
+  const auto [case_file, par] = load_tank_and_droplet(scratch);
+  FluidSolver solver(case_file, par);
+  solver.particles().rho[droplet_particles(solver.particles()).front()] = 2.01 * par.rho0;
+  EXPECT_THROW(solver.end_step(0.0), sph::RunawayError);
+}
+
+TEST(FluidSolver, MoreThanOnePercentOfTheWaterThinnedToSprayStops) {
+  // At spacing 0.01 the tank holds 50 water particles: one is 2 % of them.
+  const cosph::testing::ScratchDir scratch("much_spray");
+  const auto [case_file, par] = load_tank_and_droplet(scratch, {"fluid.spacing=0.01"});
+  FluidSolver solver(case_file, par);
+  ASSERT_LT(solver.gauges().water_particles, 100);
+  const std::vector<std::size_t> droplet = droplet_particles(solver.particles());
+  ASSERT_FALSE(droplet.empty());
+  solver.particles().rho[droplet.front()] = 0.49 * par.rho0;
+  EXPECT_THROW(solver.end_step(0.0), sph::RunawayError);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <tuple>
+#include <type_traits>
 #include <vector>
 
 #include "sphcore/parallel.hpp"
@@ -26,6 +27,19 @@ void permute(const std::vector<int>& order, Fields&... fields) {
         (fields.swap(sorted), ...);
       },
       scratch);
+}
+
+// field <- (field[kept[0]], field[kept[1]], ...) for every field given: the
+// particles left out of `kept` leave the set. Rare (spray leaving the water),
+// so unlike permute it allocates.
+template <class... Fields>
+void keep_only(const std::vector<int>& kept, Fields&... fields) {
+  const auto gather = [&kept](auto& field) {
+    std::remove_reference_t<decltype(field)> kept_values(kept.size());
+    for (std::size_t k = 0; k < kept.size(); ++k) kept_values[k] = field[kept[k]];
+    field.swap(kept_values);
+  };
+  (gather(fields), ...);
 }
 
 }  // namespace sph

@@ -45,11 +45,13 @@ struct GradientSums {
 // L_i = M_i^-1; the identity where the support is too sparse to invert
 // reliably (a lone particle or a thin sheet of spray), since there the
 // correction would amplify noise instead of removing a bias.
-inline Mat2 renormalisation_matrix(const Mat2& M) {
+inline bool can_renormalise(const Mat2& M) {
   constexpr double kSmallestDeterminant = 0.25;  // a full support gives det(M) = 1
-  const double det = M.determinant();
-  if (!(det > kSmallestDeterminant)) return Mat2::Identity();
-  return M.inverse();
+  return M.determinant() > kSmallestDeterminant;
+}
+
+inline Mat2 renormalisation_matrix(const Mat2& M) {
+  return can_renormalise(M) ? Mat2(M.inverse()) : Mat2::Identity();
 }
 
 }  // namespace sph
