@@ -110,8 +110,7 @@ void FluidSolver::end_step(double dt) {
 
 bool FluidSolver::is_thinned_spray(std::size_t i) const {
   const FluidParticles& P = particles_;
-  return P.is_water(i) && P.spray[i] &&
-         P.rho[i] < sph::screen::kLowest * parameters_.rho0;
+  return P.is_water(i) && P.spray[i] && P.rho[i] < sph::screen::kLowest * parameters_.rho0;
 }
 
 void FluidSolver::remove_thinned_spray() {

@@ -106,13 +106,13 @@ class FluidSolver {
   TaitEquationOfState eos_;
   FluidParticles particles_;
   double skin_;                    // of the Verlet list (sph::kSkinOverH)
-  long water_at_start_;
   sph::CellGrid grid_;             // built for 2h + skin at the last sort
   sph::CandidateList candidates_;  // the Verlet list of the last sort
   std::vector<Vec2> x_at_sort_;    // positions at the last sort
   long sorts_ = 0;
   bool spray_left_ = false;  // particles left since the last sort
   long spray_removed_ = 0;
+  long water_at_start_;  // declared after particles_, from which it is counted
   sph::NeighbourList pairs_;
   double time_ = 0.0;
   long steps_ = 0;
