@@ -94,6 +94,15 @@ def summarise(out, output, wall, returncode, command):
     return reached, float(np.median(dt)) if len(dt) else float("nan"), error, wall
 
 
+def spray_note(out):
+    """How much water left the run as thinned spray (README "Spray"), if any."""
+    series_path = os.path.join(out, "timeseries.csv")
+    if not os.path.exists(series_path):
+        return ""
+    removed = cr.spray_removed(cr.read_csv(series_path))
+    return "" if removed in ("-", "0") else f" ({removed} water particles left as spray)"
+
+
 def reason(error):
     """The solver's own words, without the paths."""
     if not error:
@@ -113,7 +122,7 @@ def cfl_sweeps(out_root):
             reached, dt, error, wall = launch(case, out, settings + [f"run.cfl={cfl}"], end)
             stable = not error and reached >= end * (1 - 1e-9)
             curve.append((cfl, stable, dt))
-            rows.append([scene, f"{cfl:g}", f"{dt:.3g}", "runs" if stable else
+            rows.append([scene, f"{cfl:g}", f"{dt:.3g}", "runs" + spray_note(out) if stable else
                          f"stops at t = {reached:.3g} s: {reason(error)}", f"{wall:.0f}"])
             print(rows[-1], flush=True)
             if not stable:
@@ -164,7 +173,8 @@ def diffusion_rows(out_root):
             last = sorted(glob.glob(os.path.join(out, "fluid_[0-9]*.h5")))[-1]
             noise = pressure_noise(last)
             rows.append([scene, label, f"{100 * noise:.2f} %",
-                         "runs" if not error else f"stops at t = {reached:.3f} s: {reason(error)}"])
+                         "runs" + spray_note(out) if not error else
+                         f"stops at t = {reached:.3f} s: {reason(error)}"])
             print(rows[-1], flush=True)
     return rows
 
@@ -176,7 +186,7 @@ def density_run(out_root, ratio, label, settings):
     out = os.path.join(out_root, f"density_{ratio}{suffix}")
     reached, dt, error, wall = launch("elastic_plate", out,
                                       settings + [f"solid.density={1000.0 * ratio}"], 0.1)
-    row = [f"{ratio:g}", label, "runs to 0.1 s" if not error else
+    row = [f"{ratio:g}", label, "runs to 0.1 s" + spray_note(out) if not error else
            f"stops at t = {reached:.3g} s: {reason(error)}", f"{wall:.0f}"]
     print(row, flush=True)
     return row, not error
