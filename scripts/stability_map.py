@@ -100,7 +100,9 @@ def spray_note(out):
     if not os.path.exists(series_path):
         return ""
     removed = cr.spray_removed(cr.read_csv(series_path))
-    return "" if removed in ("-", "0") else f" ({removed} water particles left as spray)"
+    if removed in ("-", "0"):
+        return ""
+    return f" ({removed} water particle{'' if removed == '1' else 's'} left as spray)"
 
 
 def reason(error):
