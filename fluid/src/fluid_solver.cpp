@@ -126,9 +126,9 @@ void FluidSolver::remove_thinned_spray() {
   if (100 * spray_removed_ > kMostSprayPercent * water_at_start_) {
     std::ostringstream message;
     message << "t = " << time_ << " s, step " << steps_ << ": " << spray_removed_ << " of "
-            << water_at_start_
-            << " water particles have thinned to spray below 0.5 rho0, more than 1 %"
-               " of the water; the run has blown up: try a smaller run.cfl";
+            << water_at_start_ << " water particles have thinned to spray below "
+            << sph::screen::kLowest << " rho0, more than " << kMostSprayPercent
+            << " % of the water; the run has blown up: try a smaller run.cfl";
     throw sph::RunawayError(message.str());
   }
   P.keep_only(kept);
