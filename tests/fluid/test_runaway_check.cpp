@@ -17,56 +17,12 @@
 namespace cosph::fluid {
 namespace {
 
-constexpr const char* kTank = R"(
-run { end_time: 0.1 gravity { x: 0 y: -9.81 } }
-fluid {
-  spacing: 0.01
-  density: 1000
-  water { min { x: 0 y: 0 } max { x: 0.1 y: 0.05 } }
-  walls { min { x: -0.03 y: -0.03 } max { x: 0.13 y: 0 } }
-  walls { min { x: -0.03 y: 0 } max { x: 0 y: 0.08 } }
-  walls { min { x: 0.1 y: 0 } max { x: 0.13 y: 0.08 } }
-}
-)";
-
-TEST(FluidSolver, EveryKindOfRunawayStopsTheStepAndNothingElseDoes) {
-  const cosph::testing::ScratchDir scratch("runaway_check");
-  cosph::testing::write_text(scratch.file("tank.pbtxt"), kTank);
-  const sph::CaseFile case_file = sph::load_case(scratch.file("tank.pbtxt"));
-  const FluidParameters par = read_fluid_parameters(case_file);
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  using Spoil = cosph::testing::Spoil<FluidParticles>;
-  const std::vector<Spoil> spoils{
-      {"x not finite", [&](FluidParticles& P, std::size_t i) { P.x[i].x() = nan; }, true},
-      {"v not finite", [&](FluidParticles& P, std::size_t i) { P.v[i].y() = nan; }, true},
-      {"rho below 0.5 rho0", [&](FluidParticles& P, std::size_t i) { P.rho[i] = 0.49 * par.rho0; },
-       true},
-      {"rho above 2 rho0", [&](FluidParticles& P, std::size_t i) { P.rho[i] = 2.01 * par.rho0; },
-       true},
-      {"faster than c0",
-       [&](FluidParticles& P, std::size_t i) { P.v[i] = Vec2(0.8, -0.6) * 1.001 * par.c0; }, true},
-      {"just below c0",
-       [&](FluidParticles& P, std::size_t i) { P.v[i] = Vec2(0.8, -0.6) * 0.995 * par.c0; }, false},
-  };
-  const auto make_solver = [&] { return FluidSolver(case_file, par); };
-  std::vector<std::size_t> water;
-  {
-    const FluidSolver solver = make_solver();
-    for (std::size_t i = 0; i < solver.particles().size(); ++i)
-      if (solver.particles().is_water(i)) water.push_back(i);
-  }
-  ASSERT_GT(water.size(), 2u);
-  cosph::testing::expect_exactly_the_runaways_stop(
-      make_solver, spoils, {water.front(), water[water.size() / 2], water.back()});
-}
-
-// A tank like kTank, with walls high enough to hold a droplet of four
-// particles (at spacing 0.005) far above the water: out of reach of the water
-// and of the walls.
+// A tank of water, and a droplet far above it, out of reach of the water and
+// of the walls: one particle at this spacing, four at 0.005.
 constexpr const char* kTankAndDroplet = R"(
 run { end_time: 0.1 gravity { x: 0 y: -9.81 } }
 fluid {
-  spacing: 0.005
+  spacing: 0.01
   density: 1000
   water { min { x: 0 y: 0 } max { x: 0.1 y: 0.05 } }
   water { min { x: 0.045 y: 0.15 } max { x: 0.055 y: 0.16 } }
@@ -96,9 +52,41 @@ std::vector<std::size_t> droplet_particles(const FluidParticles& P) {
   return droplet;
 }
 
+TEST(FluidSolver, EveryKindOfRunawayStopsTheStepAndNothingElseDoes) {
+  const cosph::testing::ScratchDir scratch("runaway_check");
+  const auto [case_file, par] = load_tank_and_droplet(scratch);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  using Spoil = cosph::testing::Spoil<FluidParticles>;
+  const std::vector<Spoil> spoils{
+      {"x not finite", [&](FluidParticles& P, std::size_t i) { P.x[i].x() = nan; }, true},
+      {"v not finite", [&](FluidParticles& P, std::size_t i) { P.v[i].y() = nan; }, true},
+      {"rho below 0.5 rho0", [&](FluidParticles& P, std::size_t i) { P.rho[i] = 0.49 * par.rho0; },
+       true},
+      {"rho above 2 rho0", [&](FluidParticles& P, std::size_t i) { P.rho[i] = 2.01 * par.rho0; },
+       true},
+      {"faster than c0",
+       [&](FluidParticles& P, std::size_t i) { P.v[i] = Vec2(0.8, -0.6) * 1.001 * par.c0; }, true},
+      {"just below c0",
+       [&](FluidParticles& P, std::size_t i) { P.v[i] = Vec2(0.8, -0.6) * 0.995 * par.c0; }, false},
+  };
+  const auto make_solver = [&] { return FluidSolver(case_file, par); };
+  std::vector<std::size_t> spoiled;  // in the tank, none of them spray
+  {
+    const FluidSolver solver = make_solver();
+    const FluidParticles& P = solver.particles();
+    std::vector<std::size_t> tank;
+    for (std::size_t i = 0; i < P.size(); ++i)
+      if (P.is_water(i) && P.x[i].y() < 0.1) tank.push_back(i);
+    ASSERT_GT(tank.size(), 2u);
+    spoiled = {tank.front(), tank[tank.size() / 2], tank.back()};
+    for (const std::size_t i : spoiled) ASSERT_FALSE(P.spray[i]) << i;
+  }
+  cosph::testing::expect_exactly_the_runaways_stop(make_solver, spoils, spoiled);
+}
+
 TEST(FluidSolver, ThinnedSprayLeavesTheWaterAndIsCounted) {
   const cosph::testing::ScratchDir scratch("thinned_spray");
-  const auto [case_file, par] = load_tank_and_droplet(scratch);
+  const auto [case_file, par] = load_tank_and_droplet(scratch, {"fluid.spacing=0.005"});
   FluidSolver solver(case_file, par);
   const long water = solver.gauges().water_particles;
   ASSERT_GE(water, 200);  // so that one particle is under 1 % of the water
@@ -125,7 +113,7 @@ TEST(FluidSolver, ThinnedSprayLeavesTheWaterAndIsCounted) {
 
 TEST(FluidSolver, SprayDenserThanTwiceRho0StillStops) {
   const cosph::testing::ScratchDir scratch("dense_spray");
-  const auto [case_file, par] = load_tank_and_droplet(scratch);
+  const auto [case_file, par] = load_tank_and_droplet(scratch, {"fluid.spacing=0.005"});
   FluidSolver solver(case_file, par);
   solver.particles().rho[droplet_particles(solver.particles()).front()] = 2.01 * par.rho0;
   EXPECT_THROW(solver.end_step(0.0), sph::RunawayError);
@@ -134,7 +122,7 @@ TEST(FluidSolver, SprayDenserThanTwiceRho0StillStops) {
 TEST(FluidSolver, MoreThanOnePercentOfTheWaterThinnedToSprayStops) {
   // At spacing 0.01 the tank holds 50 water particles: one is 2 % of them.
   const cosph::testing::ScratchDir scratch("much_spray");
-  const auto [case_file, par] = load_tank_and_droplet(scratch, {"fluid.spacing=0.01"});
+  const auto [case_file, par] = load_tank_and_droplet(scratch);
   FluidSolver solver(case_file, par);
   ASSERT_LT(solver.gauges().water_particles, 100);
   const std::vector<std::size_t> droplet = droplet_particles(solver.particles());
