@@ -26,6 +26,10 @@ struct FluidParticles {
   // Renormalised density gradient <grad rho> of the previous step: state too,
   // since the density diffusion reads it.
   std::vector<Vec2> grad_rho;
+  // Acceleration from outside the fluid (the coupler's cross-phase term):
+  // state too, since the next step's first kick reads it, and it tells which
+  // water has the solid in reach (FluidSolver::is_spray).
+  std::vector<Vec2> external_a;
 
   // Derived each step from the state.
   std::vector<double> p;               // pressure (walls: extrapolated from the water)
@@ -36,11 +40,10 @@ struct FluidParticles {
   std::vector<double> volume;          // m / rho, once per particle rather than per pair
   std::vector<Vec2> a;                 // dv/dt
   std::vector<double> drho;            // drho/dt
-  std::vector<Vec2> external_a;        // acceleration from outside the fluid (coupling)
   std::vector<double> external_drho;   // density rate from outside (a moving solid wall)
-  // 1 for spray: no wall in reach, and the water around the particle too
-  // sparse to renormalise (sph::can_renormalise): a droplet of a few
-  // particles, or a jet or a sheet one particle thick.
+  // 1 for spray as the water alone sees it: no wall in reach, and the water
+  // around the particle too sparse to renormalise (sph::can_renormalise).
+  // FluidSolver::is_spray adds that no solid is in reach either.
   std::vector<std::uint8_t> spray;
 
   std::size_t size() const { return x.size(); }

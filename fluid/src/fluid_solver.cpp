@@ -35,7 +35,7 @@ void FluidSolver::find_neighbours(bool sort) {
     // within 2h + skin / 2 of it then.
     const double reach = sph::kernel::kSupport * parameters_.h + skin_;
     grid_.build(P.x, reach, 2);
-    sph::permute(grid_.order(), P.id, P.kind, P.x, P.v, P.rho, P.m, P.grad_rho);
+    sph::permute(grid_.order(), P.id, P.kind, P.x, P.v, P.rho, P.m, P.grad_rho, P.external_a);
     x_at_sort_ = P.x;
     candidates_.build(grid_, P.x, reach, [&P](long i) { return P.is_water(i); });
     ++sorts_;
@@ -108,9 +108,14 @@ void FluidSolver::end_step(double dt) {
   check_state();
 }
 
-bool FluidSolver::is_thinned_spray(std::size_t i) const {
+bool FluidSolver::is_spray(std::size_t i) const {
   const FluidParticles& P = particles_;
-  return P.is_water(i) && P.spray[i] && P.rho[i] < sph::screen::kLowest * parameters_.rho0;
+  // The coupler's acceleration is exactly zero where no solid is in reach.
+  return P.is_water(i) && P.spray[i] && P.external_a[i] == Vec2::Zero();
+}
+
+bool FluidSolver::is_thinned_spray(std::size_t i) const {
+  return is_spray(i) && particles_.rho[i] < sph::screen::kLowest * parameters_.rho0;
 }
 
 void FluidSolver::remove_thinned_spray() {
@@ -229,7 +234,9 @@ sph::Snapshot FluidSolver::snapshot() const {
   snapshot.add_scalar("pressure", P.p);
   snapshot.add_vector("acceleration", P.a);
   snapshot.add_scalar("drho", P.drho);
-  snapshot.add_scalar("spray", std::vector<int>(P.spray.begin(), P.spray.end()));
+  std::vector<int> spray(P.size());
+  for (std::size_t i = 0; i < P.size(); ++i) spray[i] = is_spray(i);
+  snapshot.add_scalar("spray", spray);
   return snapshot;
 }
 

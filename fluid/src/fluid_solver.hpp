@@ -90,15 +90,18 @@ class FluidSolver {
   // Why particle i's state is not physical, or nullptr if it is (or is a wall,
   // or thinned spray).
   const char* runaway_reason(std::size_t i) const;
-  // Water thinned below the runaway density bound with no wall in reach and
-  // too little water around it to renormalise (FluidParticles::spray): spray
-  // thrown off the flow, a droplet of a few particles or a sheet one particle
-  // thick. Continuity keeps thinning such a particle as its few neighbours fly
-  // apart, yet a real droplet keeps the density of water: the value has lost
-  // its meaning, so it is no sign of a blow-up. Such a particle leaves the
-  // water at the end of its step (DualSPHysics likewise excludes particles
-  // whose density leaves a range); the timeseries counts them. More than 1 %
-  // of the water is a blow-up.
+  // Water with no wall and no solid in reach and too little water around it
+  // to renormalise (FluidParticles::spray): spray thrown off the flow, a
+  // droplet of a few particles or a sheet one particle thick.
+  bool is_spray(std::size_t i) const;
+  // Spray thinned below the runaway density bound. Continuity keeps thinning
+  // such a particle as its few neighbours fly apart, yet a real droplet keeps
+  // the density of water: the value has lost its meaning, so it is no sign of
+  // a blow-up. Such a particle leaves the water at the end of its step
+  // (DualSPHysics likewise excludes particles whose density leaves a range);
+  // the timeseries counts them. More than 1 % of the water is a blow-up.
+  // Water in reach of a boundary, a wall or the solid, is never spray: its
+  // density must answer when it meets that boundary.
   bool is_thinned_spray(std::size_t i) const;
   void remove_thinned_spray();
 

@@ -111,6 +111,43 @@ TEST(FluidSolver, ThinnedSprayLeavesTheWaterAndIsCounted) {
   EXPECT_EQ(solver.gauges().water_particles, water - 1);
 }
 
+std::size_t index_of(const FluidParticles& P, int id) {
+  return static_cast<std::size_t>(std::find(P.id.begin(), P.id.end(), id) - P.id.begin());
+}
+
+TEST(FluidSolver, CouplersAccelerationStaysWithItsParticleThroughAReSort) {
+  // It tells which water has the solid in reach, so it must follow the
+  // particles when the neighbour grid re-sorts them.
+  const cosph::testing::ScratchDir scratch("resort");
+  const auto [case_file, par] = load_tank_and_droplet(scratch, {"fluid.spacing=0.005"});
+  FluidSolver solver(case_file, par);
+  FluidParticles& P = solver.particles();
+  const std::vector<std::size_t> droplet = droplet_particles(P);
+  const int moved = P.id[droplet.front()], other = P.id[droplet.back()];
+  const Vec2 pushed(0.0, 1e-3);
+  P.external_a[droplet.front()] = pushed;
+  P.x[droplet.front()] += Vec2(0.03, 0.0);  // past the others: the sort must reorder
+  const std::size_t before = index_of(P, moved);
+  solver.step(1e-6);
+  ASSERT_GT(solver.sorts(), 1);
+  ASSERT_NE(index_of(P, moved), before);
+  EXPECT_EQ(P.external_a[index_of(P, moved)], pushed);
+  EXPECT_EQ(P.external_a[index_of(P, other)], Vec2::Zero());
+}
+
+TEST(FluidSolver, ThinnedWaterInReachOfTheSolidStops) {
+  // The coupler gives an acceleration exactly where a solid particle is in
+  // reach: there a low density is the flow's, not spray's.
+  const cosph::testing::ScratchDir scratch("spray_at_solid");
+  const auto [case_file, par] = load_tank_and_droplet(scratch, {"fluid.spacing=0.005"});
+  FluidSolver solver(case_file, par);
+  const std::size_t i = droplet_particles(solver.particles()).front();
+  solver.particles().external_a[i] = Vec2(0.0, 1e-3);
+  solver.particles().rho[i] = 0.49 * par.rho0;
+  EXPECT_THROW(solver.end_step(0.0), sph::RunawayError);
+  EXPECT_EQ(solver.spray_removed(), 0);
+}
+
 TEST(FluidSolver, SprayDenserThanTwiceRho0StillStops) {
   const cosph::testing::ScratchDir scratch("dense_spray");
   const auto [case_file, par] = load_tank_and_droplet(scratch, {"fluid.spacing=0.005"});
