@@ -34,8 +34,15 @@ int run_fluid(int argc, char** argv) {
             << " m, c0 = " << parameters.c0 << " m/s, " << omp_get_max_threads() << " threads"
             << std::endl;
 
-  return cosph::coupling::run_solver(solver, parameters.run, case_file, args, "fluid",
-                                     cosph::coupling::PhaseKind::fluid, "cosph-fluid (WCSPH)");
+  const int status =
+      cosph::coupling::run_solver(solver, parameters.run, case_file, args, "fluid",
+                                  cosph::coupling::PhaseKind::fluid, "cosph-fluid (WCSPH)");
+  if (solver.spray_removed() > 0)
+    std::cout << "cosph-fluid: " << solver.spray_removed()
+              << " water particles thinned to spray and left the run (timeseries.csv column"
+                 " spray_removed; README \"Spray\")"
+              << std::endl;
+  return status;
 }
 
 }  // namespace
