@@ -124,18 +124,20 @@ void FluidSolver::remove_thinned_spray() {
   kept.reserve(P.size());
   for (std::size_t i = 0; i < P.size(); ++i)
     if (!is_thinned_spray(i)) kept.push_back(static_cast<int>(i));
-  if (kept.size() == P.size()) return;
-  spray_removed_ += static_cast<long>(P.size() - kept.size());
-  // Spray is a small part of the water; when more thins, the flow has blown up.
+  const long leaving = static_cast<long>(P.size() - kept.size());
+  if (leaving == 0) return;
+  // Spray trickles away; when much of the water thins at once, the flow has
+  // blown up. Counted per step, so that a long run's spray adds up freely.
   constexpr long kMostSprayPercent = 1;
-  if (100 * spray_removed_ > kMostSprayPercent * water_at_start_) {
+  if (100 * leaving > kMostSprayPercent * water_at_start_) {
     std::ostringstream message;
-    message << "t = " << time_ << " s, step " << steps_ << ": " << spray_removed_ << " of "
-            << water_at_start_ << " water particles have thinned to spray below "
-            << sph::screen::kLowest << " rho0, more than " << kMostSprayPercent
+    message << "t = " << time_ << " s, step " << steps_ << ": " << leaving << " of "
+            << water_at_start_ << " water particles thinned to spray below " << sph::screen::kLowest
+            << " rho0 in one step, more than " << kMostSprayPercent
             << " % of the water; the run has blown up: try a smaller run.cfl";
     throw sph::RunawayError(message.str());
   }
+  spray_removed_ += leaving;
   P.keep_only(kept);
   sph::keep_only(kept, x_at_sort_);
   spray_left_ = true;  // the grid and the Verlet list still hold the old indices

@@ -99,7 +99,8 @@ class FluidSolver {
   // the density of water: the value has lost its meaning, so it is no sign of
   // a blow-up. Such a particle leaves the water at the end of its step
   // (DualSPHysics likewise excludes particles whose density leaves a range);
-  // the timeseries counts them. More than 1 % of the water is a blow-up.
+  // the timeseries counts them. More than 1 % of the water in one step is a
+  // blow-up.
   // Water in reach of a boundary, a wall or the solid, is never spray: its
   // density must answer when it meets that boundary.
   bool is_thinned_spray(std::size_t i) const;

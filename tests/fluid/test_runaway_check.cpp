@@ -156,8 +156,24 @@ TEST(FluidSolver, SprayDenserThanTwiceRho0StillStops) {
   EXPECT_THROW(solver.end_step(0.0), sph::RunawayError);
 }
 
+TEST(FluidSolver, SprayLeavingStepByStepAddsUpPastOnePercent) {
+  // A long run's spray adds up; only much water thinning at once is a blow-up.
+  const cosph::testing::ScratchDir scratch("spray_adds_up");
+  const auto [case_file, par] = load_tank_and_droplet(scratch, {"fluid.spacing=0.005"});
+  FluidSolver solver(case_file, par);
+  const long water = solver.gauges().water_particles;
+  for (int step = 0; step < 3; ++step) {
+    FluidParticles& P = solver.particles();
+    P.rho[droplet_particles(P).front()] = 0.49 * par.rho0;
+    ASSERT_NO_THROW(solver.end_step(0.0)) << step;
+  }
+  EXPECT_EQ(solver.spray_removed(), 3);
+  EXPECT_GT(100 * solver.spray_removed(), water);  // more than 1 % in all
+}
+
 TEST(FluidSolver, MoreThanOnePercentOfTheWaterThinnedToSprayStops) {
-  // At spacing 0.01 the tank holds 50 water particles: one is 2 % of them.
+  // At spacing 0.01 the tank holds 50 water particles: one is 2 % of them,
+  // thinned in one step.
   const cosph::testing::ScratchDir scratch("much_spray");
   const auto [case_file, par] = load_tank_and_droplet(scratch);
   FluidSolver solver(case_file, par);
