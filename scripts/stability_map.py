@@ -124,8 +124,9 @@ def cfl_sweeps(out_root):
             reached, dt, error, wall = launch(case, out, settings + [f"run.cfl={cfl}"], end)
             stable = not error and reached >= end * (1 - 1e-9)
             curve.append((cfl, stable, dt))
-            rows.append([scene, f"{cfl:g}", f"{dt:.3g}", "runs" + spray_note(out) if stable else
-                         f"stops at t = {reached:.3g} s: {reason(error)}", f"{wall:.0f}"])
+            rows.append([scene, f"{cfl:g}", f"{dt:.3g}", ("runs" if stable else
+                         f"stops at t = {reached:.3g} s: {reason(error)}") + spray_note(out),
+                         f"{wall:.0f}"])
             print(rows[-1], flush=True)
             if not stable:
                 break  # larger steps only fail sooner
@@ -175,8 +176,8 @@ def diffusion_rows(out_root):
             last = sorted(glob.glob(os.path.join(out, "fluid_[0-9]*.h5")))[-1]
             noise = pressure_noise(last)
             rows.append([scene, label, f"{100 * noise:.2f} %",
-                         "runs" + spray_note(out) if not error else
-                         f"stops at t = {reached:.3f} s: {reason(error)}"])
+                         ("runs" if not error else
+                          f"stops at t = {reached:.3f} s: {reason(error)}") + spray_note(out)])
             print(rows[-1], flush=True)
     return rows
 
@@ -188,8 +189,8 @@ def density_run(out_root, ratio, label, settings):
     out = os.path.join(out_root, f"density_{ratio}{suffix}")
     reached, dt, error, wall = launch("elastic_plate", out,
                                       settings + [f"solid.density={1000.0 * ratio}"], 0.1)
-    row = [f"{ratio:g}", label, "runs to 0.1 s" + spray_note(out) if not error else
-           f"stops at t = {reached:.3g} s: {reason(error)}", f"{wall:.0f}"]
+    row = [f"{ratio:g}", label, ("runs to 0.1 s" if not error else
+           f"stops at t = {reached:.3g} s: {reason(error)}") + spray_note(out), f"{wall:.0f}"]
     print(row, flush=True)
     return row, not error
 
