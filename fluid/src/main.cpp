@@ -39,8 +39,9 @@ int run_fluid(int argc, char** argv) {
                                   cosph::coupling::PhaseKind::fluid, "cosph-fluid (WCSPH)");
   if (solver.spray_removed() > 0)
     std::cout << "cosph-fluid: " << solver.spray_removed()
-              << " water particles thinned to spray and left the run (timeseries.csv column"
-                 " spray_removed; README \"Spray\")"
+              << (solver.spray_removed() == 1 ? " water particle" : " water particles")
+              << " thinned to spray and left the run (timeseries.csv column spray_removed;"
+                 " README \"Spray\")"
               << std::endl;
   return status;
 }
