@@ -75,8 +75,8 @@ struct FluidParticles {
   // Keeps the particles kept[0], kept[1], ... in that order; the others leave
   // with everything known of them.
   void keep_only(const std::vector<int>& kept) {
-    sph::keep_only(kept, id, kind, x, v, rho, m, grad_rho, p, tau, sigma, inverse_rho,
-                   grad_rho_next, volume, a, drho, external_a, external_drho, spray);
+    sph::permute(kept, id, kind, x, v, rho, m, grad_rho, p, tau, sigma, inverse_rho, grad_rho_next,
+                 volume, a, drho, external_a, external_drho, spray);
   }
 };
 

@@ -19,8 +19,7 @@ FluidSolver::FluidSolver(const sph::CaseFile& case_file, const FluidParameters& 
     : parameters_(parameters),
       eos_(parameters.rho0, parameters.c0),
       particles_(build_fluid_scene(case_file, parameters)),
-      skin_(sph::kSkinOverH * parameters.h),
-      water_at_start_(std::count(particles_.kind.begin(), particles_.kind.end(), Kind::water)) {
+      skin_(sph::kSkinOverH * parameters.h) {
   find_neighbours(true);
   compute_continuity_and_gradients(particles_, pairs_, parameters_);  // only for grad_rho
   update_pressure();
@@ -129,17 +128,18 @@ void FluidSolver::remove_thinned_spray() {
   // Spray trickles away; when much of the water thins at once, the flow has
   // blown up. Counted per step, so that a long run's spray adds up freely.
   constexpr long kMostSprayPercent = 1;
-  if (100 * leaving > kMostSprayPercent * water_at_start_) {
+  const long water = std::count(P.kind.begin(), P.kind.end(), Kind::water);
+  if (100 * leaving > kMostSprayPercent * water) {
     std::ostringstream message;
-    message << "t = " << time_ << " s, step " << steps_ << ": " << leaving << " of "
-            << water_at_start_ << " water particles thinned to spray below " << sph::screen::kLowest
+    message << "t = " << time_ << " s, step " << steps_ << ": " << leaving << " of " << water
+            << " water particles thinned to spray below " << sph::screen::kLowest
             << " rho0 in one step, more than " << kMostSprayPercent
             << " % of the water; the run has blown up: try a smaller run.cfl";
     throw sph::RunawayError(message.str());
   }
   spray_removed_ += leaving;
   P.keep_only(kept);
-  sph::keep_only(kept, x_at_sort_);
+  sph::permute(kept, x_at_sort_);
   spray_left_ = true;  // the grid and the Verlet list still hold the old indices
 }
 

@@ -117,7 +117,6 @@ class FluidSolver {
   long sorts_ = 0;
   bool spray_left_ = false;  // particles left since the last sort
   long spray_removed_ = 0;
-  long water_at_start_;  // declared after particles_, from which it is counted
   sph::NeighbourList pairs_;
   double time_ = 0.0;
   long steps_ = 0;

@@ -18,11 +18,11 @@ TEST(Permutation, PermuteMovesEveryFieldAlike) {
   for (std::size_t k = 0; k < id.size(); ++k) EXPECT_EQ(x[k].x(), id[k] - 10);
 }
 
-TEST(Permutation, KeepOnlyDropsTheOthersAndKeepsTheOrder) {
+TEST(Permutation, AShorterOrderDropsTheOthersAndKeepsTheOrder) {
   std::vector<int> id{10, 11, 12, 13, 14};
   std::vector<Vec2> x{{0, 0}, {1, 0}, {2, 0}, {3, 0}, {4, 0}};
   std::vector<unsigned char> flag{0, 1, 0, 1, 0};
-  sph::keep_only({0, 2, 4}, id, x, flag);
+  sph::permute({0, 2, 4}, id, x, flag);
   EXPECT_EQ(id, (std::vector<int>{10, 12, 14}));
   ASSERT_EQ(x.size(), 3u);
   for (std::size_t k = 0; k < id.size(); ++k) EXPECT_EQ(x[k].x(), id[k] - 10);
