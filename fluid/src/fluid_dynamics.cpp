@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "continuity.hpp"
 #include "momentum.hpp"
@@ -77,14 +78,51 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
   P.grad_rho.swap(P.grad_rho_next);
 }
 
-void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid, const FluidParameters& par,
-                           const TaitEquationOfState& eos) {
+std::vector<int> walls_in_reach(const FluidParticles& P, const sph::CellGrid& grid, double reach) {
   const long n = static_cast<long>(P.size());
-  const double support2 = support_squared(par);
-  const kernel::Value W_of(par.h);
+  const double reach2 = reach * reach;
+  std::vector<std::uint8_t> in_reach(P.size(), 0);
 #pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
   for (long w = 0; w < n; ++w) {
     if (P.is_water(w)) continue;
+    const Vec2 x_w = P.x[w];
+    bool found = false;
+    grid.for_each_candidate_range(x_w, [&](int begin, int end) {
+      for (int f = begin; f < end && !found; ++f)
+        found = P.is_water(f) && (x_w - P.x[f]).squaredNorm() < reach2;
+    });
+    in_reach[w] = found;
+  }
+  std::vector<int> walls;
+  for (long w = 0; w < n; ++w)
+    if (in_reach[w]) walls.push_back(static_cast<int>(w));
+  return walls;
+}
+
+void rest_walls_out_of_reach(FluidParticles& P, const std::vector<int>& walls_in_reach,
+                             const TaitEquationOfState& eos) {
+  auto next_in_reach = walls_in_reach.begin();
+  for (std::size_t w = 0; w < P.size(); ++w) {
+    if (P.is_water(w)) continue;
+    if (next_in_reach != walls_in_reach.end() && *next_in_reach == static_cast<int>(w)) {
+      ++next_in_reach;
+      continue;
+    }
+    P.p[w] = 0.0;
+    P.rho[w] = eos.rho0();
+    P.tau[w] = Mat2::Zero();
+  }
+}
+
+void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid,
+                           const std::vector<int>& walls, const FluidParameters& par,
+                           const TaitEquationOfState& eos) {
+  const long n = static_cast<long>(walls.size());
+  const double support2 = support_squared(par);
+  const kernel::Value W_of(par.h);
+#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
+  for (long k = 0; k < n; ++k) {
+    const int w = walls[k];
     const Vec2 x_w = P.x[w];
     sph::WallPressureSum sum;
     grid.for_each_candidate_range(x_w, [&](int begin, int end) {
@@ -98,7 +136,8 @@ void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid, const F
     });
     // Bounded below so that the Tait law can still give the wall a density.
     P.p[w] = std::max(sum.wall_pressure(par.run.gravity), -0.5 * eos.P0());
-    // Most wall particles have no water in reach: rho0 without the pow().
+    // A wall in reach at the sort may have no water within 2h: rho0 without
+    // the pow().
     P.rho[w] = P.p[w] == 0.0 ? eos.rho0() : eos.density(P.p[w]);
     P.tau[w] = Mat2::Zero();
   }

@@ -8,6 +8,8 @@
 // 3. accelerations: dv/dt from the momentum equation, the one force evaluation.
 #pragma once
 
+#include <vector>
+
 #include "equation_of_state.hpp"
 #include "fluid_parameters.hpp"
 #include "fluid_particles.hpp"
@@ -22,8 +24,22 @@ namespace cosph::fluid {
 void compute_continuity_and_gradients(FluidParticles& particles, const sph::NeighbourList& pairs,
                                       const FluidParameters& parameters);
 
+// The wall particles with water closer than `reach`, in index order. With
+// reach = 2h + skin at a sort, no other wall has water within 2h until the
+// next sort (no particle moves skin / 2 in between): their pressure is zero.
+std::vector<int> walls_in_reach(const FluidParticles& particles, const sph::CellGrid& grid,
+                                double reach);
+
+// The other walls (walls_in_reach in index order) as they are with no water
+// in reach: p = 0, rho0, tau = 0. Those in reach keep their values, which the
+// continuity pass reads before the new wall pressure is known.
+void rest_walls_out_of_reach(FluidParticles& particles, const std::vector<int>& walls_in_reach,
+                             const TaitEquationOfState& eos);
+
+// The pressure (and density) of `walls`; the other walls are left as they are.
 void compute_wall_pressure(FluidParticles& particles, const sph::CellGrid& grid,
-                           const FluidParameters& parameters, const TaitEquationOfState& eos);
+                           const std::vector<int>& walls, const FluidParameters& parameters,
+                           const TaitEquationOfState& eos);
 
 // The water's own forces and gravity; the coupling's share is added by the
 // integrator, since it arrives after this evaluation.

@@ -37,6 +37,9 @@ void FluidSolver::find_neighbours(bool sort) {
     sph::permute(grid_.order(), P.id, P.kind, P.x, P.v, P.rho, P.m, P.grad_rho, P.external_a);
     x_at_sort_ = P.x;
     candidates_.build(grid_, P.x, reach, [&P](long i) { return P.is_water(i); });
+    // Walls far from the water cost nothing until the next sort.
+    walls_in_reach_ = walls_in_reach(P, grid_, reach);
+    rest_walls_out_of_reach(P, walls_in_reach_, eos_);
     ++sorts_;
   }
   pairs_.build(candidates_, P.x, parameters_.h);
@@ -50,7 +53,7 @@ void FluidSolver::update_pressure() {
 }
 
 void FluidSolver::compute_forces() {
-  compute_wall_pressure(particles_, grid_, parameters_, eos_);
+  compute_wall_pressure(particles_, grid_, walls_in_reach_, parameters_, eos_);
   compute_accelerations(particles_, pairs_, parameters_);
 }
 

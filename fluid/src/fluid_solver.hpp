@@ -110,10 +110,11 @@ class FluidSolver {
   FluidParameters parameters_;
   TaitEquationOfState eos_;
   FluidParticles particles_;
-  double skin_;                    // of the Verlet list (sph::kSkinOverH)
-  sph::CellGrid grid_;             // built for 2h + skin at the last sort
-  sph::CandidateList candidates_;  // the Verlet list of the last sort
-  std::vector<Vec2> x_at_sort_;    // positions at the last sort
+  double skin_;                      // of the Verlet list (sph::kSkinOverH)
+  sph::CellGrid grid_;               // built for 2h + skin at the last sort
+  sph::CandidateList candidates_;    // the Verlet list of the last sort
+  std::vector<Vec2> x_at_sort_;      // positions at the last sort
+  std::vector<int> walls_in_reach_;  // of the water at the last sort (walls_in_reach)
   long sorts_ = 0;
   bool spray_left_ = false;  // particles left since the last sort
   long spray_removed_ = 0;
