@@ -33,9 +33,11 @@ namespace sph {
 namespace detail {
 
 // One thread's lists: the first `size` entries of j (and of value, for a list
-// that keeps one per pair) are in use.
+// that keeps one per pair) are in use. A cache line of its own: each thread
+// moves its `size` on every particle, and two stores sharing a line made the
+// line bounce between the cores (false sharing).
 template <bool kWithValue>
-struct PairStore {
+struct alignas(64) PairStore {
   std::vector<int> j;
   std::vector<double> value;
   std::size_t size = 0;
