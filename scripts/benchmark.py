@@ -97,8 +97,8 @@ def ceiling(best, side_by_side):
     together = max(1 / ms[0] + 1 / ms[1] for ms in side_by_side) * alone
     return (f"Two copies of that one-thread run started together, one for each core and "
             f"sharing nothing, did {together:.2f} times the work of one alone (best of "
-            f"{len(side_by_side)}). That is what this machine's second core adds to work "
-            f"that shares nothing: the two-thread target cannot be met where it is below 1.8.")
+            f"{len(side_by_side)}): what this machine's second core adds to work that shares "
+            f"nothing, the most two threads of one run could reach here.")
 
 
 def growth(measured, small, large):
