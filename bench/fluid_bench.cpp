@@ -33,6 +33,7 @@ struct Measurement {
   // more of the particles lie near a surface or a wall.
   long pairs = 0;
   long sorts = 0;  // fluid: neighbour re-sorts during the timed steps
+  long water = 0;  // fluid: the water particles, the ones the integrator moves
 };
 
 // The pairs a fluid step visits: every water particle's neighbours within 2h.
@@ -84,8 +85,13 @@ Measurement time_fluid(const std::string& case_path, double spacing, int threads
   const std::vector<double> start = clock_seconds();
   for (int s = 0; s < steps; ++s) solver.step(solver.step_limits().smallest());
   const double elapsed = seconds_since(start);
-  return {static_cast<long>(solver.particles().size()), threads, elapsed / steps,
-          fluid_pairs(solver), solver.sorts() - sorts_before};
+  const auto& kind = solver.particles().kind;
+  return {static_cast<long>(solver.particles().size()),
+          threads,
+          elapsed / steps,
+          fluid_pairs(solver),
+          solver.sorts() - sorts_before,
+          std::count(kind.begin(), kind.end(), cosph::fluid::Kind::water)};
 }
 
 // The solid on the oscillating plate (Gray et al. 2001) at a given spacing.
@@ -144,14 +150,14 @@ int bench(int argc, char** argv) {
   }
   const std::string case_path = std::string(COSPH_SOURCE_DIR) + "/cases/dam_break.pbtxt";
   if (quick && spacings.size() > 1) spacings.pop_back();
-  std::printf("%-6s %10s %8s %14s %22s %10s\n", "solver", "particles", "threads", "ms/step",
-              "particle-steps/s", "pairs");
+  std::printf("%-6s %10s %8s %14s %22s %10s %8s\n", "solver", "particles", "threads", "ms/step",
+              "particle-steps/s", "pairs", "water");
   for (double spacing : spacings)
     for (int threads : thread_counts) {
       const Measurement m = time_fluid(case_path, spacing, threads, steps);
-      std::printf("%-6s %10ld %8d %14.4f %22.4g %10ld\n", "fluid", m.particles, m.threads,
+      std::printf("%-6s %10ld %8d %14.4f %22.4g %10ld %8ld\n", "fluid", m.particles, m.threads,
                   1e3 * m.seconds_per_step, static_cast<double>(m.particles) / m.seconds_per_step,
-                  m.pairs);
+                  m.pairs, m.water);
       if (show_sorts) std::printf("#   %ld re-sorts in %d steps\n", m.sorts, steps);
       std::fflush(stdout);
     }
@@ -160,9 +166,9 @@ int bench(int argc, char** argv) {
   for (double spacing : {0.002, 0.001})
     for (int threads : thread_counts) {
       const Measurement m = time_solid(plate, spacing, threads, steps);
-      std::printf("%-6s %10ld %8d %14.4f %22.4g %10ld\n", "solid", m.particles, m.threads,
+      std::printf("%-6s %10ld %8d %14.4f %22.4g %10ld %8s\n", "solid", m.particles, m.threads,
                   1e3 * m.seconds_per_step, static_cast<double>(m.particles) / m.seconds_per_step,
-                  m.pairs);
+                  m.pairs, "-");
       std::fflush(stdout);
     }
   return 0;
