@@ -72,17 +72,12 @@ def main():
                             "one round trip per solver per step, about 0.1 ms.")
 
 
-# The largest scene's spacing (cosph-bench's third).
-LARGEST_SPACING = "0.0009"
-
-
 def second_core_gain(binary, steps):
     """The work two one-thread runs of the largest fluid scene do when started
     together, one for each core and sharing nothing but the machine, against
     one such run alone just before: 2 on a machine whose cores do not slow
     each other."""
-    command = [binary, "--fluid", "--threads", "1", "--spacing", LARGEST_SPACING,
-               "--steps", str(steps)]
+    command = [binary, "--fluid", "--largest", "--threads", "1", "--steps", str(steps)]
 
     def ms_per_step(output):
         return float(output.splitlines()[-1].split()[3])

@@ -72,6 +72,13 @@ struct FluidParticles {
     spray.assign(n, 0);
   }
 
+  // Puts the fields marked as state above into `order`, the neighbour
+  // grid's: new index k holds old particle order[k]. The derived fields are
+  // computed again from it before anything reads them.
+  void permute_state(const std::vector<int>& order) {
+    sph::permute(order, id, kind, x, v, rho, m, grad_rho, external_a);
+  }
+
   // Keeps the particles kept[0], kept[1], ... in that order; the others leave
   // with everything known of them.
   void keep_only(const std::vector<int>& kept) {

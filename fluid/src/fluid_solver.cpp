@@ -34,7 +34,7 @@ void FluidSolver::find_neighbours(bool sort) {
     // within 2h + skin / 2 of it then.
     const double reach = sph::kernel::kSupport * parameters_.h + skin_;
     grid_.build(P.x, reach, 2);
-    sph::permute(grid_.order(), P.id, P.kind, P.x, P.v, P.rho, P.m, P.grad_rho, P.external_a);
+    P.permute_state(grid_.order());
     x_at_sort_ = P.x;
     candidates_.build(grid_, P.x, reach, [&P](long i) { return P.is_water(i); });
     // Walls far from the water cost nothing until the next sort.
