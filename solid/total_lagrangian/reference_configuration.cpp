@@ -1,6 +1,7 @@
 #include "reference_configuration.hpp"
 
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 
 #include "hooke_pressure.hpp"
@@ -74,6 +75,12 @@ void find_reference_neighbours(TLParticles& P, double h) {
     for (ReferenceNeighbour& neighbour : neighbours)
       neighbour.grad_W0_tilde = P.L0[i] * neighbour.grad_W0;
   });
+  P.inert.resize(P.size());
+  for (std::size_t i = 0; i < P.size(); ++i)
+    P.inert[i] = P.clamped[i] && std::all_of(P.neighbours[i].begin(), P.neighbours[i].end(),
+                                             [&P](const ReferenceNeighbour& neighbour) {
+                                               return P.clamped[neighbour.j] != 0;
+                                             });
 }
 
 }  // namespace cosph::solid::tl

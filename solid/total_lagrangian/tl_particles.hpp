@@ -30,6 +30,10 @@ struct TLParticles {
   std::vector<double> m, V0;
   std::vector<double> lambda, mu, E, c;  // Lame constants, Young's modulus, P-wave speed
   std::vector<std::uint8_t> clamped;
+  // Clamped, and so is every reference neighbour: clamped particles never
+  // move, so u = 0 all around it for good, F = I and its stress is zero (the
+  // values resize_derived gives). The deformation pass skips it.
+  std::vector<std::uint8_t> inert;
   std::vector<Mat2> L0;  // reference kernel-gradient correction
   std::vector<std::vector<ReferenceNeighbour>> neighbours;
 
