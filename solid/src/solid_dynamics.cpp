@@ -7,6 +7,7 @@
 #include "artificial_stress.hpp"
 #include "jaumann_rate.hpp"
 #include "sphcore/kernel.hpp"
+#include "sphcore/outer_product_sum.hpp"
 #include "sphcore/pair_terms.hpp"
 #include "sphcore/parallel.hpp"
 #include "sphcore/quadratic_gradient.hpp"
@@ -28,24 +29,17 @@ double power(double f, double n) {
   return std::pow(f, n);
 }
 
-// grad v_i = sum_j (v_j - v_i) (x) b_ij with the fit's weights b_ij. The sum
-// is kept as its two columns (d v / dx, d v / dy): a 2x2 Eigen sum went
-// through the stack, and reading it back whole from two half-width stores
-// stalled every pair.
+// grad v_i = sum_j (v_j - v_i) (x) b_ij with the fit's weights b_ij.
 Mat2 fitted_gradient(const SolidParticles& P, long i, const std::vector<Neighbour>& neighbours,
                      const sph::QuadraticGradient& fit) {
-  Vec2 grad_v_x = Vec2::Zero(), grad_v_y = Vec2::Zero();
+  sph::OuterProductSum grad_v;
   for (const Neighbour& neighbour : neighbours) {
     const int j = neighbour.j;
     const double V_j = P.volume[j];
     const Vec2 b_ij = fit.gradient_weight(V_j * neighbour.W_ij, P.x[j] - P.x[i]);
-    const Vec2 v_ji = P.v[j] - P.v[i];
-    grad_v_x += v_ji * b_ij.x();
-    grad_v_y += v_ji * b_ij.y();
+    grad_v.add(P.v[j] - P.v[i], b_ij);
   }
-  Mat2 grad_v;
-  grad_v << grad_v_x, grad_v_y;
-  return grad_v;
+  return grad_v.matrix();
 }
 
 }  // namespace

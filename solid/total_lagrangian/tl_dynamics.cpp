@@ -1,6 +1,7 @@
 #include "tl_dynamics.hpp"
 
 #include "hourglass_control.hpp"
+#include "sphcore/outer_product_sum.hpp"
 #include "sphcore/pair_terms.hpp"
 #include "sphcore/parallel.hpp"
 #include "st_venant_kirchhoff.hpp"
@@ -11,20 +12,13 @@ void compute_deformation_and_stress(TLParticles& P) {
   sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
     if (P.inert[i]) return;  // at rest for good: F = I, no stress
     const Vec2 u_i = P.x[i] - P.X[i];
-    // grad_u += (V0_j u_ji) grad_W0_tilde^T, kept as its two columns: a 2x2
-    // Eigen sum went through the stack, and reading it back whole from two
-    // half-width stores stalled every pair (perf: two thirds of the pass).
-    Vec2 grad_u_X = Vec2::Zero(), grad_u_Y = Vec2::Zero();
+    sph::OuterProductSum grad_u;
     for (const ReferenceNeighbour& neighbour : P.neighbours[i]) {
       const int j = neighbour.j;
       const Vec2 u_ji = (P.x[j] - P.X[j]) - u_i;
-      const Vec2 weighted = P.V0[j] * u_ji;
-      grad_u_X += weighted * neighbour.grad_W0_tilde.x();
-      grad_u_Y += weighted * neighbour.grad_W0_tilde.y();
+      grad_u.add(P.V0[j] * u_ji, neighbour.grad_W0_tilde);
     }
-    Mat2 grad_u;
-    grad_u << grad_u_X, grad_u_Y;
-    const Mat2 F = Mat2::Identity() + grad_u;
+    const Mat2 F = Mat2::Identity() + grad_u.matrix();
     const SvkStress stress = st_venant_kirchhoff(F, P.lambda[i], P.mu[i]);
     P.F[i] = F;
     P.J[i] = F.determinant();
