@@ -36,11 +36,10 @@ using sph::Mat2;
 using sph::Vec2;
 
 // Force on i from its pair with j (divide by m_i for the acceleration).
-// X_ji = X_j - X_i and x_ji = x_j - x_i.
+// X_ji = X_j - X_i, x_ji = x_j - x_i and r = |x_ji|, which the caller has.
 inline Vec2 hourglass_force(double alpha, const Mat2& F_i, const Mat2& F_j, double E_i, double E_j,
                             double V0_i, double V0_j, double W0_ij, const Vec2& X_ji,
-                            const Vec2& x_ji) {
-  const double r = x_ji.norm();
+                            const Vec2& x_ji, double r) {
   if (r <= 0.0) return Vec2::Zero();
   const Vec2 n = x_ji / r;
   const double delta_i = (F_i * X_ji - x_ji).dot(n);

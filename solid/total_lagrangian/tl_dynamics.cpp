@@ -22,6 +22,7 @@ void compute_deformation_and_stress(TLParticles& P) {
     const SvkStress stress = st_venant_kirchhoff(F, P.lambda[i], P.mu[i]);
     P.F[i] = F;
     P.J[i] = F.determinant();
+    P.rho[i] = P.m[i] / (P.V0[i] * P.J[i]);
     P.P_L0[i] = stress.P * P.L0[i];
     P.sigma[i] = stress.sigma;
     P.sigma_zz[i] = stress.sigma_zz;
@@ -38,7 +39,7 @@ void compute_accelerations(TLParticles& P, const ForceParameters& par) {
     }
     const Vec2 x_i = P.x[i], v_i = P.v[i], X_i = P.X[i];
     const double m_i = P.m[i], V0_i = P.V0[i], c_i = P.c[i];
-    const double rho_i = m_i / (V0_i * P.J[i]);
+    const double rho_i = P.rho[i];
     const Mat2& P_L0_i = P.P_L0[i];
     Vec2 f_i = Vec2::Zero();
     for (const ReferenceNeighbour& neighbour : P.neighbours[i]) {
@@ -49,14 +50,14 @@ void compute_accelerations(TLParticles& P, const ForceParameters& par) {
       // Artificial viscosity along the current direction.
       const Vec2 x_ij = x_i - P.x[j];
       const double r_ij = x_ij.norm();
-      const double rho_j = P.m[j] / (V0_j * P.J[j]);
+      const double rho_j = P.rho[j];
       const double Pi_ij = sph::artificial_viscosity(
           x_ij, v_i - P.v[j], par.h, 0.5 * (c_i + P.c[j]), 0.5 * (rho_i + rho_j), par.A, par.B);
       if (Pi_ij != 0.0 && r_ij > 0.0)
         f_i -= ((m_i * P.m[j]) * Pi_ij * neighbour.dW0_dr / r_ij) * x_ij;
       if (with_hourglass)
         f_i += hourglass_force(par.hourglass_alpha, P.F[i], P.F[j], P.E[i], P.E[j], V0_i, V0_j,
-                               neighbour.W0, P.X[j] - X_i, -x_ij);
+                               neighbour.W0, P.X[j] - X_i, -x_ij, r_ij);
     }
     P.a[i] = par.gravity + f_i / m_i;
   });

@@ -45,6 +45,7 @@ struct TLParticles {
   // Derived from the state each step.
   std::vector<Mat2> F;                // deformation gradient
   std::vector<double> J;              // det F
+  std::vector<double> rho;            // m / (V0 J), the density
   std::vector<Mat2> P_L0;             // first Piola-Kirchhoff stress times L0, the momentum flux
   std::vector<Mat2> sigma;            // Cauchy stress P F^T / J (in-plane)
   std::vector<double> sigma_zz;       // out-of-plane Cauchy stress of plane strain
@@ -57,6 +58,8 @@ struct TLParticles {
     const std::size_t n = size();
     F.assign(n, Mat2::Identity());
     J.assign(n, 1.0);
+    rho.resize(n);
+    for (std::size_t i = 0; i < n; ++i) rho[i] = m[i] / V0[i];  // J = 1
     P_L0.assign(n, Mat2::Zero());
     sigma.assign(n, Mat2::Zero());
     sigma_zz.assign(n, 0.0);

@@ -80,8 +80,7 @@ void TLSolver::collect_interface(const sph::Region& region, sph::InterfacePartic
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (!region.contains(P.x[i])) continue;
     interface_index_.push_back(static_cast<long>(i));
-    const double rho = P.m[i] / (P.V0[i] * P.J[i]);  // rho0 / J
-    out.add(P.id[i], P.x[i], P.v[i], P.sigma[i], P.m[i], rho, parameters_.h, P.c[i]);
+    out.add(P.id[i], P.x[i], P.v[i], P.sigma[i], P.m[i], P.rho[i], parameters_.h, P.c[i]);
   }
 }
 
@@ -158,11 +157,10 @@ void TLSolver::check_state() const {
 sph::Snapshot TLSolver::snapshot() const {
   const TLParticles& P = particles_;
   const std::size_t n = P.size();
-  std::vector<double> rho(n), pressure(n), xx(n), xy(n), yy(n), vm(n);
+  std::vector<double> pressure(n), xx(n), xy(n), yy(n), vm(n);
   std::vector<int> failed(n, 0);
   std::vector<int> clamped(P.clamped.begin(), P.clamped.end());
   for (std::size_t i = 0; i < n; ++i) {
-    rho[i] = P.m[i] / (P.V0[i] * P.J[i]);
     // Mean normal stress of plane strain, sigma_zz included (as the Jaumann
     // solid's P = K (rho/rho0 - 1) is).
     pressure[i] = -(P.sigma[i].trace() + P.sigma_zz[i]) / 3.0;
@@ -174,7 +172,7 @@ sph::Snapshot TLSolver::snapshot() const {
   sph::Snapshot snapshot(P.x);
   snapshot.add_scalar("id", P.id);
   snapshot.add_vector("velocity", P.v);
-  snapshot.add_scalar("density", rho);
+  snapshot.add_scalar("density", P.rho);
   snapshot.add_scalar("pressure", pressure);
   snapshot.add_scalar("stress_xx", xx);
   snapshot.add_scalar("stress_xy", xy);
