@@ -30,11 +30,11 @@ struct ForceParameters {
   sph::Vec2 gravity;
 };
 
-// Reads x, X, neighbours; writes F, J, P_L0, sigma, sigma_zz, strain_energy,
+// Reads x, X, neighbours; writes F, J, rho, P_L0, sigma, sigma_zz, strain_energy,
 // except for inert particles, whose values stay those of F = I.
 void compute_deformation_and_stress(TLParticles& particles);
 
-// Reads x, v, F, J, P_L0; writes a (zero for clamped particles). The coupler's
+// Reads x, v, F, rho, P_L0; writes a (zero for clamped particles). The coupler's
 // external_a is not included: the kicks add it.
 void compute_accelerations(TLParticles& particles, const ForceParameters& parameters);
 
