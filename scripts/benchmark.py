@@ -103,9 +103,10 @@ def ceiling(gains):
             f"nothing, the most two threads of one run could reach here.")
 
 
-def growth(measured, small, large):
-    """The exponent a of measured ~ size^a between two sizes."""
-    return math.log(measured[large] / measured[small]) / math.log(large[1] / small[1])
+def growth(measured, small, large, size=lambda key: key[1]):
+    """The exponent a of measured ~ size^a between two scenes (size: by
+    default their particle counts)."""
+    return math.log(measured[large] / measured[small]) / math.log(size(large) / size(small))
 
 
 def against_targets(best, pairs, water, times):
@@ -132,17 +133,15 @@ def against_targets(best, pairs, water, times):
     time_growth = growth(best, small, large)
     pair_growth = growth(pairs, small, large)
     time_per_pair = (best[large] / pairs[large]) / (best[small] / pairs[small])
-    water_small, water_large = int(water[small]), int(water[large])
-    water_growth = math.log(best[large] / best[small]) / math.log(water_large / water_small)
+    water_growth = growth(best, small, large, lambda key: int(water[key]))
     return (f"Against the targets, the fluid at {large[1]} particles: {one / 1e3:.2f} M "
             f"particle-steps/s on one thread (target 5 M), {two / one:.2f} times that on two "
             f"(target 1.8{within_runs}); time per step grows as N^{time_growth:.2f} from "
             f"{small[1]} to {large[1]} particles on one thread (target N^1.05). Over the same "
-            f"range the "
-            f"pairs within 2h grow as N^{pair_growth:.2f}, and the time per pair is "
+            f"range the pairs within 2h grow as N^{pair_growth:.2f}, and the time per pair is "
             f"{time_per_pair:.2f} times that of the smallest scene. Against the water "
-            f"particles alone ({water_small} to {water_large}) the time per "
-            f"step grows as N^{water_growth:.2f}.")
+            f"particles alone ({water[small]} to {water[large]}) the time per step grows as "
+            f"N^{water_growth:.2f}.")
 
 
 if __name__ == "__main__":

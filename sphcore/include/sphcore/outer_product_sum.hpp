@@ -5,7 +5,7 @@
 // register: summed as an Eigen 2x2 matrix it went through the stack, and
 // reading it back whole from two half-width stores stalled every term (perf:
 // two thirds of the total-Lagrangian deformation pass). GradientSums
-// (renormalisation.hpp) keeps its sums as vectors for the same reason.
+// (renormalisation.hpp) sums M and the velocity gradient with it too.
 #pragma once
 
 #include "sphcore/types.hpp"
