@@ -5,7 +5,6 @@
 
 #include <Eigen/LU>
 
-#include "sphcore/outer_product_sum.hpp"
 #include "sphcore/types.hpp"
 
 namespace sph {
@@ -16,20 +15,31 @@ inline Mat2 renormalisation_term(double V_j, const Vec2& grad_W_ij, const Vec2& 
 }
 
 // M_i and the raw velocity gradient sum_j V_j (v_j - v_i) (x) grad_i W_ij,
-// summed over a particle's neighbours as OuterProductSums: summed as Eigen
-// 2x2 matrices they went through the stack, and the store-forwarding stalls
-// doubled the cost of the pass that sums them (in the fluid and in the solid
-// alike).
+// summed over a particle's neighbours as 2-vectors (the columns of M, the rows
+// of grad v), each one register: summed as Eigen 2x2 matrices they went
+// through the stack, and the store-forwarding stalls doubled the cost of the
+// pass that sums them (in the fluid and in the solid alike).
 struct GradientSums {
-  OuterProductSum M_sum, grad_v_sum;
+  Vec2 M_x = Vec2::Zero(), M_y = Vec2::Zero();    // columns of M
+  Vec2 Gv_x = Vec2::Zero(), Gv_y = Vec2::Zero();  // rows of grad v: grad v_x, grad v_y
 
   // Vg = V_j grad_i W_ij; adds renormalisation_term(V_j, grad_W_ij, x_ij) to M.
   void add(const Vec2& Vg, const Vec2& x_ij, const Vec2& v_ij) {
-    M_sum.add(Vg, -x_ij);
-    grad_v_sum.add(-v_ij, Vg);
+    M_x -= x_ij.x() * Vg;
+    M_y -= x_ij.y() * Vg;
+    Gv_x -= v_ij.x() * Vg;
+    Gv_y -= v_ij.y() * Vg;
   }
-  Mat2 M() const { return M_sum.matrix(); }
-  Mat2 raw_velocity_gradient() const { return grad_v_sum.matrix(); }
+  Mat2 M() const {
+    Mat2 m;
+    m << M_x, M_y;
+    return m;
+  }
+  Mat2 raw_velocity_gradient() const {
+    Mat2 g;
+    g << Gv_x.transpose(), Gv_y.transpose();
+    return g;
+  }
 };
 
 // L_i = M_i^-1; the identity where the support is too sparse to invert
