@@ -152,6 +152,15 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
                              sph::Vec2(wall.max().x(), wall.max().y())};
     p.walls.push_back(region.grown(0.5 * p.dx));
   }
+  if (solid.walls().empty() && case_file.config.has_fluid()) {
+    const auto& water_walls = case_file.config.fluid().walls();
+    for (int k = 0; k < water_walls.size(); ++k) {
+      const auto& wall = water_walls[k];
+      const sph::Region region{sph::Vec2(wall.min().x(), wall.min().y()),
+                               sph::Vec2(wall.max().x(), wall.max().y())};
+      p.unmet_walls.push_back({k, region.grown(-0.5 * p.dx)});
+    }
+  }
   if (solid.has_tip_gauge()) p.tip_gauge = sph::Vec2(solid.tip_gauge().x(), solid.tip_gauge().y());
   return p;
 }

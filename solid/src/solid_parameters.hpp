@@ -9,6 +9,7 @@
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/run_parameters.hpp"
 #include "sphcore/types.hpp"
+#include "unmet_walls.hpp"
 
 namespace cosph::solid {
 
@@ -77,6 +78,8 @@ struct SolidParameters {
   std::optional<double> broken_part_below_y;
   std::vector<sph::Region> walls;  // rigid walls grown by dx/2 (wall_contact.hpp)
   double hourglass_alpha;          // total_lagrangian: hourglass control (Ganzenmueller 2015)
+  // The water's walls when the case lists no solid.walls (unmet_walls.hpp).
+  std::vector<UnmetWall> unmet_walls;
 };
 
 // Throws sph::ConfigError naming the file, field and reason for bad input.

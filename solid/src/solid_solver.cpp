@@ -14,6 +14,7 @@
 #include "sphcore/permutation.hpp"
 #include "sphcore/runaway_error.hpp"
 #include "sphcore/runaway_screen.hpp"
+#include "unmet_walls.hpp"
 #include "von_mises_failure.hpp"
 #include "wall_contact.hpp"
 
@@ -25,6 +26,8 @@ SolidSolver::SolidSolver(const sph::CaseFile& case_file, const SolidParameters& 
       skin_(sph::kSkinOverH * parameters.h) {
   if (parameters_.tip_gauge)
     tip_ids_ = tip_gauge_ids(particles_, *parameters_.tip_gauge, parameters_.dx);
+  parameters_.unmet_walls =
+      walls_no_free_particle_is_inside(particles_.x, particles_.clamped, parameters_.unmet_walls);
   mark_inert_clamp();
   sort();
   compute_rates(particles_, candidates_, parameters_);  // for the renormalisation matrices
@@ -127,6 +130,7 @@ void SolidSolver::end_step(double dt) {
   time_ += dt;
   ++steps_;
   check_state();
+  stop_if_in_unmet_wall(particles_, parameters_.unmet_walls, time_, steps_);
 }
 
 void SolidSolver::collect_interface(const sph::Region& region, sph::InterfaceParticles& out) {

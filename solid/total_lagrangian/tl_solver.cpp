@@ -10,6 +10,7 @@
 #include "sphcore/parallel.hpp"
 #include "sphcore/runaway_error.hpp"
 #include "sphcore/runaway_screen.hpp"
+#include "unmet_walls.hpp"
 #include "wall_contact.hpp"
 
 namespace cosph::solid::tl {
@@ -28,6 +29,8 @@ TLSolver::TLSolver(const sph::CaseFile& case_file, const SolidParameters& parame
       forces_{parameters.h, parameters.A, parameters.B, parameters.hourglass_alpha,
               parameters.run.gravity},
       particles_(build_reference_configuration(case_file, parameters)) {
+  parameters_.unmet_walls =
+      walls_no_free_particle_is_inside(particles_.x, particles_.clamped, parameters_.unmet_walls);
   if (parameters_.tip_gauge)
     tip_ids_ = tip_gauge_ids(particles_.id, particles_.X, *parameters_.tip_gauge, parameters_.dx);
   update();
@@ -71,6 +74,7 @@ void TLSolver::end_step(double dt) {
   time_ += dt;
   ++steps_;
   check_state();
+  stop_if_in_unmet_wall(particles_, parameters_.unmet_walls, time_, steps_);
 }
 
 void TLSolver::collect_interface(const sph::Region& region, sph::InterfaceParticles& out) {

@@ -39,6 +39,28 @@ solid {
 )" + extra + "\n}\n");
 }
 
+// A coupled case's solid part: a 0.1 x 0.04 m block 20 mm above the water's
+// floor, fluid.walls[1], and no solid.walls, so that the solid does not meet
+// the floor (unmet_walls.hpp). The water and fluid.walls[0], a wall on the
+// left, are out of the block's way. `extra` goes into the solid block;
+// `body_bottom` is the block's lower face.
+inline std::string tank_drop_case(const std::string& name, const std::string& extra = "",
+                                  double body_bottom = 0.02) {
+  return write_case(name, R"(
+run { gravity { x: 0 y: -9.81 } end_time: 1 }
+fluid {
+  spacing: 0.01
+  water { min { x: -0.3 y: 0 } max { x: -0.2 y: 0.1 } }
+  walls { min { x: -0.35 y: 0 } max { x: -0.3 y: 0.2 } }
+  walls { min { x: -0.35 y: -0.05 } max { x: 0.2 y: 0 } }
+}
+solid {
+  spacing: 0.01 density: 1000 youngs_modulus: 1e6 poisson_ratio: 0.3
+  body { min { x: 0 y: )" + std::to_string(body_bottom) +
+                              R"( } max { x: 0.1 y: 0.06 } }
+)" + extra + "\n}\n");
+}
+
 // The lowest particle height above `floor`; a block resting on the floor
 // y = 0 has its lowest particles half a spacing (5 mm) above it.
 template <class Particles>

@@ -264,6 +264,23 @@ TEST(TotalLagrangianCaseFields, DroppedBlockRestsOnTheFloorAndIsGauged) {
   EXPECT_NEAR(broken_y, 0.010, 0.002);
 }
 
+// The same watch on the water's walls as the Jaumann solid's
+// (test_unmet_walls.cpp): 30 mm of free fall into the floor stops the run.
+TEST(TotalLagrangianCaseFields, ABlockFallingIntoTheWatersFloorStopsTheRun) {
+  const sph::CaseFile case_file =
+      sph::load_case(testing::tank_drop_case("tl_tank_drop", "  model: \"total_lagrangian\""));
+  TLSolver solver(case_file, read_solid_parameters(case_file));
+  std::string message;
+  try {
+    while (solver.time() < 0.2) solver.step(solver.step_limits().smallest());
+  } catch (const sph::RunawayError& error) {
+    message = error.what();
+  }
+  ASSERT_FALSE(message.empty()) << "the block went through the floor, t = " << solver.time();
+  EXPECT_NEAR(solver.time(), std::sqrt(2.0 * 0.03 / 9.81), 0.002);
+  EXPECT_NE(message.find("fluid.walls[1]"), std::string::npos) << message;
+}
+
 // Short mode of scripts/validate_oscillating_plate.py --model total_lagrangian:
 // the coarse plate (6 particles across) over one period.
 TEST(OscillatingPlateTl, CoarsePeriodNearThinPlateTheory) {
