@@ -154,25 +154,59 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
     P.inverse_rho[i] = 1.0 / P.rho[i];
   }
 
-  const sph::UniformArtificialViscosity Pi_of(par.h, par.c0, par.A, par.B);
-#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
-  for (long i = 0; i < n; ++i) {
-    if (!P.is_water(i)) continue;
-    const Vec2 x_i = P.x[i], v_i = P.v[i];
-    const double rho_i = P.rho[i], inverse_rho_i = P.inverse_rho[i];
-    const SymmetricStress sigma_i = P.sigma[i];
-    Vec2 a_i = par.run.gravity;
+  // Each pair of water particles is worked out once, by the lower index, which
+  // gives the higher one its share (sph::OrderedShares): half the pair terms
+  // of visiting every pair from both ends. A wall has no list and needs no
+  // acceleration; the water visits its walls from its own side.
+  const bool threaded = sph::worth_threads(P.size());
+  P.a.resize(P.size());
+  sph::OrderedShares<Vec2>& shares = P.a_shares;
+  const long blocks = shares.prepare(n, threaded, [&](long i) -> long {
     const auto neighbours = pairs.neighbours(i);
-    const auto F = pairs.gradient_factors(i);
-    for (std::size_t k = 0; k < neighbours.size(); ++k) {
-      const int j = neighbours[k];
-      const Vec2 x_ij = x_i - P.x[j];
-      const double Pi_ij = Pi_of(x_ij, v_i - P.v[j], 0.5 * (rho_i + P.rho[j]));
-      a_i += momentum_pair(P.m[j], sigma_i, P.sigma[j], inverse_rho_i, P.inverse_rho[j], Pi_ij,
-                           F[k] * x_ij);
+    return neighbours.empty() ? i : neighbours.back();
+  });
+  const sph::UniformArtificialViscosity Pi_of(par.h, par.c0, par.A, par.B);
+#pragma omp parallel for schedule(static) if (threaded)
+  for (long b = 0; b < blocks; ++b) {
+    for (long i = shares.begin(b); i < shares.end(b); ++i) P.a[i].setZero();
+    for (long i = shares.begin(b); i < shares.end(b); ++i) {
+      if (!P.is_water(i)) continue;
+      const Vec2 x_i = P.x[i], v_i = P.v[i];
+      const double m_i = P.m[i], rho_i = P.rho[i], inverse_rho_i = P.inverse_rho[i];
+      const SymmetricStress sigma_i = P.sigma[i];
+      const auto bracket_times_gradient_of = [&](int j, double F_ij) {
+        const Vec2 x_ij = x_i - P.x[j];
+        const double Pi_ij = Pi_of(x_ij, v_i - P.v[j], 0.5 * (rho_i + P.rho[j]));
+        return bracket_times_gradient(sigma_i, P.sigma[j], inverse_rho_i, P.inverse_rho[j], Pi_ij,
+                                      F_ij * x_ij);
+      };
+      const auto neighbours = pairs.neighbours(i);
+      const auto F = pairs.gradient_factors(i);
+      const std::size_t later = static_cast<std::size_t>(
+          std::upper_bound(neighbours.begin(), neighbours.end(), static_cast<int>(i)) -
+          neighbours.begin());
+      Vec2 a_i = Vec2::Zero();
+      // The water before i has given i its share already; its walls have not.
+      for (std::size_t k = 0; k < later; ++k) {
+        const int j = neighbours[k];
+        if (P.is_water(j)) continue;
+        a_i += P.m[j] * bracket_times_gradient_of(j, F[k]);
+      }
+      // A later wall is sent a share too, which nothing reads: cheaper than
+      // telling walls apart here.
+      for (std::size_t k = later; k < neighbours.size(); ++k) {
+        const int j = neighbours[k];
+        const Vec2 bracket_times_gradient_ij = bracket_times_gradient_of(j, F[k]);
+        a_i += P.m[j] * bracket_times_gradient_ij;
+        shares.share(b, P.a.data(), j) -= m_i * bracket_times_gradient_ij;
+      }
+      P.a[i] += a_i;
     }
-    P.a[i] = a_i;
   }
+  shares.merge(P.a, threaded);
+#pragma omp parallel for schedule(static) if (threaded)
+  for (long i = 0; i < n; ++i)
+    P.a[i] = P.is_water(i) ? Vec2(P.a[i] + par.run.gravity) : Vec2::Zero();
 }
 
 }  // namespace cosph::fluid

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "momentum.hpp"
+#include "sphcore/ordered_shares.hpp"
 #include "sphcore/permutation.hpp"
 #include "sphcore/types.hpp"
 
@@ -45,6 +46,8 @@ struct FluidParticles {
   // around the particle too sparse to renormalise (sph::can_renormalise).
   // FluidSolver::is_spray adds that no solid is in reach either.
   std::vector<std::uint8_t> spray;
+  // The momentum pass's shares for later blocks of particles (sph::OrderedShares).
+  sph::OrderedShares<Vec2> a_shares{Vec2::Zero()};
 
   std::size_t size() const { return x.size(); }
   bool is_water(std::size_t i) const { return kind[i] == Kind::water; }

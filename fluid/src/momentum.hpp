@@ -27,16 +27,27 @@ inline SymmetricStress total_stress(double p, const Mat2& tau) {
   return {-p + tau(0, 0), tau(0, 1), -p + tau(1, 1)};
 }
 
-// Contribution of j to dv_i/dt.
-inline Vec2 momentum_pair(double m_j, const SymmetricStress& sigma_i,
-                          const SymmetricStress& sigma_j, double inverse_rho_i,
-                          double inverse_rho_j, double Pi_ij, const Vec2& grad_W_ij) {
+// The pair's bracket times grad_i W_ij,
+//   ( (sigma_i + sigma_j) / (rho_i rho_j) - Pi_ij I ) . grad_i W_ij:
+// j's contribution to dv_i/dt is m_j times it, i's to dv_j/dt -m_i times it
+// (the bracket is symmetric, grad_j W_ji = -grad_i W_ij).
+inline Vec2 bracket_times_gradient(const SymmetricStress& sigma_i, const SymmetricStress& sigma_j,
+                                   double inverse_rho_i, double inverse_rho_j, double Pi_ij,
+                                   const Vec2& grad_W_ij) {
   const double inverse_rho_i_rho_j = inverse_rho_i * inverse_rho_j;
   const double b_xx = (sigma_i.xx + sigma_j.xx) * inverse_rho_i_rho_j - Pi_ij;
   const double b_xy = (sigma_i.xy + sigma_j.xy) * inverse_rho_i_rho_j;
   const double b_yy = (sigma_i.yy + sigma_j.yy) * inverse_rho_i_rho_j - Pi_ij;
-  return m_j * Vec2(b_xx * grad_W_ij.x() + b_xy * grad_W_ij.y(),
-                    b_xy * grad_W_ij.x() + b_yy * grad_W_ij.y());
+  return Vec2(b_xx * grad_W_ij.x() + b_xy * grad_W_ij.y(),
+              b_xy * grad_W_ij.x() + b_yy * grad_W_ij.y());
+}
+
+// Contribution of j to dv_i/dt.
+inline Vec2 momentum_pair(double m_j, const SymmetricStress& sigma_i,
+                          const SymmetricStress& sigma_j, double inverse_rho_i,
+                          double inverse_rho_j, double Pi_ij, const Vec2& grad_W_ij) {
+  return m_j *
+         bracket_times_gradient(sigma_i, sigma_j, inverse_rho_i, inverse_rho_j, Pi_ij, grad_W_ij);
 }
 
 }  // namespace cosph::fluid

@@ -4,11 +4,15 @@
 // the pair forces conserve linear momentum to round-off.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
 
 #include "equation_of_state.hpp"
 #include "fluid_dynamics.hpp"
 #include "fluid_test_support.hpp"
+#include "momentum.hpp"
+#include "sphcore/pair_terms.hpp"
 #include "viscous_stress.hpp"
 
 namespace cosph::fluid {
@@ -126,6 +130,81 @@ TEST(FluidMomentum, PairForcesConserveLinearMomentum) {
   EXPECT_GT(magnitude, 1.0);    // the forces are real (pressures of order 1e5 Pa)
   EXPECT_GT(largest_tau, 0.0);  // and the viscous stress takes part
   EXPECT_LT(total.norm(), 1e-12 * magnitude) << "sum m a = " << total.transpose();
+}
+
+// A random cloud of water over a floor of wall particles, a few thousand
+// particles: several of sph::OrderedShares' blocks, so shares go both within
+// a block and to later ones.
+FluidParticles cloud_over_a_floor(const FluidParameters& p, int water) {
+  const TaitEquationOfState eos(p.rho0, p.c0);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  FluidParticles P;
+  const double width = 0.6;
+  for (int k = 0; k < water; ++k) {
+    const Vec2 x(width * unit(random), 0.3 * unit(random));
+    const double rho = 980.0 + 40.0 * unit(random);
+    P.add(k, Kind::water, x, rho, rho * p.dx * p.dx * (0.8 + 0.4 * unit(random)));
+    P.v.back() = Vec2(unit(random) - 0.5, unit(random) - 0.5);
+  }
+  for (int k = 0; k * p.dx < width; ++k)
+    for (int layer = 1; layer <= 3; ++layer)
+      P.add(water + 3 * k + layer, Kind::wall, Vec2(k * p.dx, -layer * p.dx), p.rho0,
+            p.rho0 * p.dx * p.dx);
+  return P;
+}
+
+// The pass works each water pair out once and hands the later particle its
+// share; the sum it gives is the plain sum of the momentum equation over each
+// particle's own neighbours, to round-off.
+TEST(FluidMomentum, EachPairOnceGivesThePlainSumOverEachParticlesNeighbours) {
+  const FluidParameters p = water_parameters(0.01, Vec2(0.0, -9.81));
+  const TaitEquationOfState eos(p.rho0, p.c0);
+  FluidParticles P = cloud_over_a_floor(p, 3000);
+  Neighbourhood n;
+  sort_and_find_neighbours(P, p, n);
+  compute_continuity_and_gradients(P, n.pairs, p);
+  for (std::size_t i = 0; i < P.size(); ++i)
+    P.p[i] = P.is_water(i) ? eos.pressure(P.rho[i]) : 1000.0 * (1.0 + std::sin(double(i)));
+  compute_accelerations(P, n.pairs, p);
+
+  const sph::UniformArtificialViscosity Pi_of(p.h, p.c0, p.A, p.B);
+  double largest = 0.0, worst = 0.0;
+  int walls_met = 0;
+  for (long i = 0; i < static_cast<long>(P.size()); ++i) {
+    if (!P.is_water(i)) {
+      EXPECT_EQ(P.a[i], Vec2::Zero());
+      continue;
+    }
+    Vec2 a_i = p.run.gravity;
+    const auto neighbours = n.pairs.neighbours(i);
+    const auto F = n.pairs.gradient_factors(i);
+    for (std::size_t k = 0; k < neighbours.size(); ++k) {
+      const int j = neighbours[k];
+      walls_met += !P.is_water(j);
+      const Vec2 x_ij = P.x[i] - P.x[j];
+      const double Pi_ij = Pi_of(x_ij, P.v[i] - P.v[j], 0.5 * (P.rho[i] + P.rho[j]));
+      a_i += momentum_pair(P.m[j], P.sigma[i], P.sigma[j], P.inverse_rho[i], P.inverse_rho[j],
+                           Pi_ij, F[k] * x_ij);
+    }
+    largest = std::max(largest, a_i.norm());
+    worst = std::max(worst, (P.a[i] - a_i).norm());
+  }
+  EXPECT_GT(walls_met, 100);  // the floor takes part
+  EXPECT_GT(largest, 1e3);    // the forces are real
+  EXPECT_LT(worst, 1e-12 * largest);
+}
+
+// The pass finds a particle's later neighbours at the end of its list.
+TEST(FluidMomentum, NeighbourListsAreInIndexOrder) {
+  const FluidParameters p = water_parameters(0.01);
+  FluidParticles P = cloud_over_a_floor(p, 3000);
+  Neighbourhood n;
+  sort_and_find_neighbours(P, p, n);
+  for (long i = 0; i < static_cast<long>(P.size()); ++i) {
+    const auto neighbours = n.pairs.neighbours(i);
+    ASSERT_TRUE(std::is_sorted(neighbours.begin(), neighbours.end())) << "particle " << i;
+  }
 }
 
 TEST(FluidMomentum, GravityAloneAcceleratesAnIsolatedParticle) {
