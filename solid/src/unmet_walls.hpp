@@ -56,19 +56,24 @@ std::vector<UnmetWall> walls_no_free_particle_is_inside(const Positions& x, cons
 }
 
 // Throws sph::RunawayError, naming the particle, the wall and what to add to
-// the case, if a free particle of P lies inside one of `walls`.
+// the case, if a free particle of P lies inside one of `walls`. The speed is
+// in the message because a body flung through a wall by a blow-up (the
+// stability map's light coupled plates) is caught here too.
 template <class Particles>
 void stop_if_in_unmet_wall(const Particles& P, const std::vector<UnmetWall>& walls, double time,
                            long steps) {
   const auto crossing = find_wall_crossing(P.x, P.clamped, walls);
   if (!crossing) return;
-  const sph::Vec2 x = P.x[crossing->particle];
+  const sph::Vec2 x = P.x[crossing->particle], v = P.v[crossing->particle];
   std::ostringstream message;
   message << "solid particle " << P.id[crossing->particle] << " at (" << x.x() << ", " << x.y()
           << ") m, t = " << time << " s, step " << steps
           << ": it has gone into the water's wall fluid.walls[" << crossing->wall_index
-          << "]. The solid meets only the walls listed under solid.walls, and the case lists "
-             "none: list there the walls the solid must not cross (usually the fluid's)";
+          << "] (speed " << v.norm()
+          << " m/s). The solid meets only the walls listed under solid.walls, and the case "
+             "lists none: if the body is to rest on or strike this wall, list the walls there "
+             "(usually the fluid's); if it got there at a speed no flow could give it, the run "
+             "has blown up";
   throw sph::RunawayError(message.str());
 }
 
