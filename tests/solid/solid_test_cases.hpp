@@ -9,6 +9,8 @@
 #include <fstream>
 #include <string>
 
+#include "sphcore/runaway_error.hpp"
+
 namespace cosph::solid::testing {
 
 inline std::string temporary_path(const std::string& name) {
@@ -59,6 +61,18 @@ solid {
   body { min { x: 0 y: )" + std::to_string(body_bottom) +
                               R"( } max { x: 0.1 y: 0.06 } }
 )" + extra + "\n}\n");
+}
+
+// Steps the solver until `end_time` and returns the message of the
+// sph::RunawayError that stopped it, or "" if none did.
+template <class Solver>
+std::string runaway_message_before(Solver& solver, double end_time) {
+  try {
+    while (solver.time() < end_time) solver.step(solver.step_limits().smallest());
+  } catch (const sph::RunawayError& error) {
+    return error.what();
+  }
+  return "";
 }
 
 // The lowest particle height above `floor`; a block resting on the floor
