@@ -7,7 +7,8 @@
 // per pair: the total stress is symmetric (tau is) and kept by its three
 // components, and 1/rho is worked out once per particle, so a pair builds no
 // 2x2 matrix and divides nothing. The bracket is still symmetric in i and j
-// bit for bit, so equal masses still exchange exactly opposite forces.
+// bit for bit, and each pair is worked out once for both particles
+// (fluid_dynamics.cpp), so they exchange exactly opposite momentum.
 #pragma once
 
 #include "sphcore/types.hpp"
@@ -40,14 +41,6 @@ inline Vec2 bracket_times_gradient(const SymmetricStress& sigma_i, const Symmetr
   const double b_yy = (sigma_i.yy + sigma_j.yy) * inverse_rho_i_rho_j - Pi_ij;
   return Vec2(b_xx * grad_W_ij.x() + b_xy * grad_W_ij.y(),
               b_xy * grad_W_ij.x() + b_yy * grad_W_ij.y());
-}
-
-// Contribution of j to dv_i/dt.
-inline Vec2 momentum_pair(double m_j, const SymmetricStress& sigma_i,
-                          const SymmetricStress& sigma_j, double inverse_rho_i,
-                          double inverse_rho_j, double Pi_ij, const Vec2& grad_W_ij) {
-  return m_j *
-         bracket_times_gradient(sigma_i, sigma_j, inverse_rho_i, inverse_rho_j, Pi_ij, grad_W_ij);
 }
 
 }  // namespace cosph::fluid

@@ -21,6 +21,10 @@ void check_elastic(const sph::CaseFile& case_file, const std::string& field, dou
               format_number(nu));
 }
 
+sph::Region region_of(const cosph::config::Box& box) {
+  return {sph::Vec2(box.min().x(), box.min().y()), sph::Vec2(box.max().x(), box.max().y())};
+}
+
 void check_box(const sph::CaseFile& case_file, const std::string& field,
                const cosph::config::Box& box, double dx) {
   require(box.max().x() - box.min().x() >= dx && box.max().y() - box.min().y() >= dx, case_file,
@@ -148,18 +152,12 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
   for (int k = 0; k < solid.walls_size(); ++k) {
     const auto& wall = solid.walls(k);
     check_box(case_file, "solid.walls[" + std::to_string(k) + "]", wall, p.dx);
-    const sph::Region region{sph::Vec2(wall.min().x(), wall.min().y()),
-                             sph::Vec2(wall.max().x(), wall.max().y())};
-    p.walls.push_back(region.grown(0.5 * p.dx));
+    p.walls.push_back(region_of(wall).grown(0.5 * p.dx));
   }
   if (solid.walls().empty() && case_file.config.has_fluid()) {
     const auto& water_walls = case_file.config.fluid().walls();
-    for (int k = 0; k < water_walls.size(); ++k) {
-      const auto& wall = water_walls[k];
-      const sph::Region region{sph::Vec2(wall.min().x(), wall.min().y()),
-                               sph::Vec2(wall.max().x(), wall.max().y())};
-      p.unmet_walls.push_back({k, region.grown(-0.5 * p.dx)});
-    }
+    for (int k = 0; k < water_walls.size(); ++k)
+      p.unmet_walls.push_back({k, region_of(water_walls[k]).grown(-0.5 * p.dx)});
   }
   if (solid.has_tip_gauge()) p.tip_gauge = sph::Vec2(solid.tip_gauge().x(), solid.tip_gauge().y());
   return p;
