@@ -52,10 +52,12 @@ bool within_reach_of_water(const google::protobuf::RepeatedPtrField<Box>& walls,
 
 void check_walls_close(const sph::CaseFile& case_file, const FluidParameters& parameters) {
   const auto& fluid = case_file.config.fluid();
-  std::vector<Box> closers(fluid.walls().begin(), fluid.walls().end());
+  std::vector<Box> solid_bodies;
   if (case_file.config.has_solid())
-    closers.insert(closers.end(), case_file.config.solid().body().begin(),
-                   case_file.config.solid().body().end());
+    solid_bodies.assign(case_file.config.solid().body().begin(),
+                        case_file.config.solid().body().end());
+  std::vector<Box> closers(fluid.walls().begin(), fluid.walls().end());
+  closers.insert(closers.end(), solid_bodies.begin(), solid_bodies.end());
   const double dx = parameters.dx, eps = 1e-3 * dx;
 
   for (int k = 0; k < fluid.water_size(); ++k) {
@@ -64,6 +66,11 @@ void check_walls_close(const sph::CaseFile& case_file, const FluidParameters& pa
     for (int w = 0; w < fluid.walls_size(); ++w)
       sph::require(!overlaps(fluid.walls(w), water, eps), case_file,
                    "fluid.walls[" + std::to_string(w) + "]", "overlaps " + name);
+    // Two phases on one site: the coupler's pair forces would tear them apart
+    // at the first step, and the water would stay inside the solid's shape.
+    for (std::size_t b = 0; b < solid_bodies.size(); ++b)
+      sph::require(!overlaps(solid_bodies[b], water, eps), case_file,
+                   "solid.body[" + std::to_string(b) + "]", "overlaps " + name);
     auto fail = [&](const Vec2& p, const char* side) {
       sph::require(false, case_file, "fluid.walls",
                    "do not close " + name + ": water at (" + sph::format_number(p.x()) + ", " +

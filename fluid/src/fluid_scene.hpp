@@ -10,7 +10,7 @@ namespace cosph::fluid {
 
 // Throws sph::ConfigError if the water could flow out of the walls (and the
 // solid, if the case has one) to the left, the right or the bottom, or if a wall
-// overlaps the water.
+// or a solid body overlaps the water.
 void check_walls_close(const sph::CaseFile& case_file, const FluidParameters& parameters);
 
 FluidParticles build_fluid_scene(const sph::CaseFile& case_file, const FluidParameters& parameters);

@@ -1,9 +1,11 @@
 #include "solid_scene.hpp"
 
 #include <algorithm>
+#include <string>
 
 #include "bending_mode.hpp"
 #include "hooke_pressure.hpp"
+#include "sphcore/case_file.hpp"
 #include "sphcore/lattice.hpp"
 
 namespace cosph::solid {
@@ -33,6 +35,22 @@ double initial_vertical_speed(const Vec2& x, const BendingModeParameters& mode) 
          cantilever_mode_shape(mode.length, mode.length);
 }
 
+// A free particle that starts inside one of solid.walls would be thrown onto
+// the wall's face at the first step, on top of its neighbours: the case is
+// wrong, and the user should hear so before the run, not see a squashed body.
+// Clamped particles may sit in a wall (a plate held in the floor).
+void require_free_particles_outside_walls(const sph::CaseFile& case_file, int body,
+                                          const Vec2& x, const SolidParameters& p) {
+  for (std::size_t k = 0; k < p.walls.size(); ++k) {
+    const bool inside = p.walls[k].grown(-1e-6 * p.dx).contains(x);
+    sph::require(!inside, case_file, "solid.walls[" + std::to_string(k) + "]",
+                 "a free particle of solid.body[" + std::to_string(body) + "] at (" +
+                     sph::format_number(x.x()) + ", " + sph::format_number(x.y()) +
+                     ") m starts inside it: move the body out of the wall, or clamp that part "
+                     "(solid.clamp)");
+  }
+}
+
 }  // namespace
 
 SolidParticles build_solid_scene(const sph::CaseFile& case_file, const SolidParameters& p) {
@@ -40,8 +58,8 @@ SolidParticles build_solid_scene(const sph::CaseFile& case_file, const SolidPara
   const double mass = p.rho0 * p.dx * p.dx;
   SolidParticles particles;
   int next_id = 0;
-  for (const auto& box : solid.body()) {
-    for (const Vec2& x : sph::fill_box(box, p.dx)) {
+  for (int body = 0; body < solid.body_size(); ++body) {
+    for (const Vec2& x : sph::fill_box(solid.body(body), p.dx)) {
       // Overlapping body boxes must not put two particles on one site.
       const bool taken = std::any_of(particles.x.begin(), particles.x.end(), [&](const Vec2& y) {
         return (y - x).squaredNorm() < 0.01 * p.dx * p.dx;
@@ -49,6 +67,7 @@ SolidParticles build_solid_scene(const sph::CaseFile& case_file, const SolidPara
       if (taken) continue;
       const bool clamped = std::any_of(solid.clamp().begin(), solid.clamp().end(),
                                        [&](const auto& clamp) { return sph::contains(clamp, x); });
+      if (!clamped) require_free_particles_outside_walls(case_file, body, x, p);
       const double E = youngs_modulus_at(x, p);
       const double K = bulk_modulus(E, p.nu), G = shear_modulus(E, p.nu);
       particles.add(next_id++, x, p.rho0, mass, K, G, longitudinal_sound_speed(K, G, p.rho0),

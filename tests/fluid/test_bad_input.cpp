@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "fluid_scene.hpp"
 #include "fluid_test_support.hpp"
 #include "test_support.hpp"
 
@@ -79,6 +80,26 @@ TEST(BadInput, WallOverlappingTheWaterIsRefused) {
   const auto run = run_cosph_fluid(kDamBreak, dir.file("out"), {"fluid.walls[1].max.x=0.05"});
   EXPECT_EQ(run.exit_code, 2) << run.err;
   EXPECT_TRUE(contains(run.err, "fluid.walls[1]: overlaps fluid.water[0]")) << run.err;
+}
+
+// A coupled case: the fluid alone refuses it, so the check is called as
+// cosph-case calls it before the launcher starts anything.
+TEST(BadInput, WaterOverlappingTheSolidIsRefused) {
+  const std::string elastic_plate = std::string(COSPH_SOURCE_DIR) + "/cases/elastic_plate.pbtxt";
+  const auto refusal = [&](const std::string& water_right_edge) -> std::string {
+    const sph::CaseFile case_file =
+        sph::load_case(elastic_plate, {"fluid.water[0].max.x=" + water_right_edge});
+    try {
+      check_walls_close(case_file, read_fluid_parameters(case_file));
+    } catch (const sph::ConfigError& error) {
+      return error.what();
+    }
+    return "";
+  };
+  // The water column made to reach 2 mm into the plate, and up to it.
+  EXPECT_TRUE(contains(refusal("0.102"), elastic_plate + ": solid.body[0]: overlaps fluid.water[0]"))
+      << refusal("0.102");
+  EXPECT_EQ(refusal("0.1"), "");
 }
 
 TEST(BadInput, WallThinnerThanTheSupportIsRefused) {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "solid_parameters.hpp"
+#include "solid_scene.hpp"
 #include "solid_test_cases.hpp"
 
 namespace cosph::solid {
@@ -65,6 +66,36 @@ TEST(SolidParameters, OtherBadFieldsAreNamed) {
   const std::string message = refusal({"solid.velocity_gradient=cubic"});
   EXPECT_NE(message.find("solid.velocity_gradient"), std::string::npos) << message;
   EXPECT_NE(message.find("quadratic, linear"), std::string::npos) << message;
+}
+
+// The message that building the scene of a tank-drop case with a floor under
+// solid.walls refuses it with, or "" if it builds.
+std::string scene_refusal(const std::string& name, const std::string& extra, double body_bottom) {
+  const std::string floor = "  walls { min { x: -0.35 y: -0.05 } max { x: 0.2 y: 0 } }\n";
+  const sph::CaseFile case_file =
+      sph::load_case(testing::tank_drop_case(name, floor + extra, body_bottom));
+  try {
+    build_solid_scene(case_file, read_solid_parameters(case_file));
+  } catch (const sph::ConfigError& error) {
+    return error.what();
+  }
+  return "";
+}
+
+// A free particle that starts inside one of solid.walls would be thrown onto
+// its face at once; a clamped one may sit there (a plate held in the floor).
+TEST(SolidScene, AFreeParticleStartingInsideASolidWallIsRefused) {
+  const std::string message = scene_refusal("in_floor", "", -0.02);
+  EXPECT_NE(message.find("solid.walls[0]: a free particle of solid.body[0] at (0.005, -0.015) m"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("solid.clamp"), std::string::npos) << message;
+  EXPECT_EQ(scene_refusal("in_floor_clamped",
+                          "  clamp { min { x: 0 y: -0.02 } max { x: 0.1 y: 0 } }\n", -0.02),
+            "");
+  // Resting on the floor: the lowest row half a spacing above it, on the face
+  // of the wall grown by half a spacing.
+  EXPECT_EQ(scene_refusal("on_floor", "", 0.0), "");
 }
 
 int run_solid(const std::string& arguments) {
