@@ -39,8 +39,8 @@ double initial_vertical_speed(const Vec2& x, const BendingModeParameters& mode) 
 // the wall's face at the first step, on top of its neighbours: the case is
 // wrong, and the user should hear so before the run, not see a squashed body.
 // Clamped particles may sit in a wall (a plate held in the floor).
-void require_free_particles_outside_walls(const sph::CaseFile& case_file, int body,
-                                          const Vec2& x, const SolidParameters& p) {
+void require_free_particles_outside_walls(const sph::CaseFile& case_file, int body, const Vec2& x,
+                                          const SolidParameters& p) {
   for (std::size_t k = 0; k < p.walls.size(); ++k) {
     const bool inside = p.walls[k].grown(-1e-6 * p.dx).contains(x);
     sph::require(!inside, case_file, "solid.walls[" + std::to_string(k) + "]",

@@ -97,7 +97,8 @@ TEST(BadInput, WaterOverlappingTheSolidIsRefused) {
     return "";
   };
   // The water column made to reach 2 mm into the plate, and up to it.
-  EXPECT_TRUE(contains(refusal("0.102"), elastic_plate + ": solid.body[0]: overlaps fluid.water[0]"))
+  EXPECT_TRUE(
+      contains(refusal("0.102"), elastic_plate + ": solid.body[0]: overlaps fluid.water[0]"))
       << refusal("0.102");
   EXPECT_EQ(refusal("0.1"), "");
 }
