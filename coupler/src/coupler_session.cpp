@@ -29,6 +29,8 @@ struct Peer {
   sph::Region bounds;
   cp::InterfaceState state;
   sph::InterfaceParticles particles;
+  // Of the last state that had them: a solver sends gauges when asked.
+  google::protobuf::RepeatedPtrField<cp::Gauge> gauges;
 };
 
 class Session {
@@ -183,6 +185,11 @@ class Session {
       messaging_seconds_ += std::chrono::duration<double>(Clock::now() - parse_start).count();
       peer.bounds = cp::from_proto(peer.state.bounds());
       peer.max_h = peer.state.max_smoothing_length();
+      if (!peer.state.gauges().empty()) {
+        if (timeseries_ && peer.state.gauges_size() != peer.gauges.size())
+          fail(std::string(kSideName[side]) + " changed the set of gauges it sends during the run");
+        peer.gauges.Swap(peer.state.mutable_gauges());
+      }
       got[side] = true;
       last_in = side;
     }
@@ -211,6 +218,8 @@ class Session {
       fail("a solver proposed a step that is not positive at t = " + std::to_string(t) + " s");
     dt = std::min(dt, end - t);
     record(step, t, dt, forces, stop);
+    // Asked for ahead: the solvers then pay for gauges on these states only.
+    row_due_ = !stop && (t + dt >= next_output_ || t + dt >= end - 1e-9 * end);
 
     const auto send_start = Clock::now();
     // The solver whose state came last sets the pace; the other has been
@@ -223,6 +232,7 @@ class Session {
       s.set_stop(stop);
       s.set_whole_step(settings_.solid_at_fluid_step);
       s.set_came_last(side == last_in);
+      s.set_report_gauges(row_due_);
       const auto& a = side == kFluid ? forces.fluid_a : forces.solid_a;
       s.mutable_acceleration()->Resize(2 * static_cast<int>(a.size()), 0.0);
       std::copy_n(cp::doubles_of(a), 2 * a.size(), s.mutable_acceleration()->mutable_data());
@@ -243,14 +253,12 @@ class Session {
 
   void record(long step, double t, double dt, const CrossPhaseForces& forces, bool stop) {
     if (!timeseries_) open_outputs();
-    if (t < next_output_ && !stop) return;
+    if (!row_due_ && !stop) return;
     next_output_ += settings_.run.output_interval;
     std::vector<double> row{t, dt};
     for (int side : {kFluid, kSolid})
-      for (const auto& gauge : peers_[side].state.gauges()) row.push_back(gauge.value());
-    row.push_back(level_ < 0 ? 0.0 : peers_[kFluid].state.gauges(level_).value());
-    if (row.size() != timeseries_->column_count())
-      fail("a solver changed the set of gauges it sends during the run");
+      for (const auto& gauge : peers_[side].gauges) row.push_back(gauge.value());
+    row.push_back(level_ < 0 ? 0.0 : peers_[kFluid].gauges[level_].value());
     timeseries_->write_row(row);
     const std::array<double, 15> coupling{t,
                                           forces.force_on_fluid.x(),
@@ -274,12 +282,12 @@ class Session {
     std::vector<sph::Column> columns{{"t", "s"}, {"dt", "s"}};
     // A name both sides measure (kinetic_energy, max_speed) gets the side as prefix.
     auto measured_by = [this](int side, const std::string& name) {
-      for (const auto& gauge : peers_[side].state.gauges())
+      for (const auto& gauge : peers_[side].gauges)
         if (gauge.name() == name) return true;
       return false;
     };
     for (int side : {kFluid, kSolid}) {
-      const auto& gauges = peers_[side].state.gauges();
+      const auto& gauges = peers_[side].gauges;
       for (int g = 0; g < gauges.size(); ++g) {
         const bool shared = measured_by(1 - side, gauges[g].name());
         columns.push_back(
@@ -318,6 +326,9 @@ class Session {
   std::optional<sph::TimeSeriesWriter> timeseries_, coupling_;
   int level_ = -1;
   double next_output_ = 0.0;
+  // The states in hand go into timeseries.csv: asked for with the last
+  // answer (CouplingStep.report_gauges), and the first.
+  bool row_due_ = true;
   double wait_seconds_ = 0.0, messaging_seconds_ = 0.0, pair_seconds_ = 0.0;
   sph::ProgressReporter progress_{settings_.run.end_time};
 };

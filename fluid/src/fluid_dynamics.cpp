@@ -209,4 +209,25 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
     P.a[i] = P.is_water(i) ? Vec2(P.a[i] + par.run.gravity) : Vec2::Zero();
 }
 
+std::vector<Vec2> forces_on_walls(const FluidParticles& P, const sph::NeighbourList& pairs,
+                                  const FluidParameters& par) {
+  std::vector<Vec2> force(P.first_wall_id.size(), Vec2::Zero());
+  const sph::UniformArtificialViscosity Pi_of(par.h, par.c0, par.A, par.B);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (!P.is_water(i)) continue;
+    const auto neighbours = pairs.neighbours(static_cast<long>(i));
+    const auto F = pairs.gradient_factors(static_cast<long>(i));
+    for (std::size_t k = 0; k < neighbours.size(); ++k) {
+      const int j = neighbours[k];
+      if (P.is_water(j)) continue;
+      const Vec2 x_ij = P.x[i] - P.x[j];
+      const double Pi_ij = Pi_of(x_ij, P.v[i] - P.v[j], 0.5 * (P.rho[i] + P.rho[j]));
+      force[P.wall_of(j)] -= P.m[i] * P.m[j] *
+                             bracket_times_gradient(P.sigma[i], P.sigma[j], P.inverse_rho[i],
+                                                    P.inverse_rho[j], Pi_ij, F[k] * x_ij);
+    }
+  }
+  return force;
+}
+
 }  // namespace cosph::fluid

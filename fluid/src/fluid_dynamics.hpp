@@ -6,6 +6,7 @@
 // 2. wall_pressure: the walls' pressure extrapolated from the water (Adami et
 //    al. 2012), once the water's new pressure is known.
 // 3. accelerations: dv/dt from the momentum equation, the one force evaluation.
+// And, for the timeseries, the force of the water on each wall (forces_on_walls).
 #pragma once
 
 #include <vector>
@@ -45,5 +46,16 @@ void compute_wall_pressure(FluidParticles& particles, const sph::CellGrid& grid,
 // integrator, since it arrives after this evaluation.
 void compute_accelerations(FluidParticles& particles, const sph::NeighbourList& pairs,
                            const FluidParameters& parameters);
+
+// The force of the water on each of fluid.walls, per unit depth (N/m): minus
+// the momentum terms its wall particles j give the water,
+//   F_k = - sum_{j in wall k} sum_{water i} m_i m_j ( (sigma_i + sigma_j) / (rho_i rho_j)
+//                                                   - Pi_ij I ) . grad_i W_ij,
+// with the stresses of the last compute_accelerations and the velocities of
+// now (in the artificial viscosity; the same until the step's last kick). Pairs
+// are equal and opposite, so the walls' forces add up to sum_i m_i (g - a_i)
+// over the water (less the coupling's share): what holds the water up.
+std::vector<Vec2> forces_on_walls(const FluidParticles& particles, const sph::NeighbourList& pairs,
+                                  const FluidParameters& parameters);
 
 }  // namespace cosph::fluid

@@ -2,6 +2,7 @@
 // particles that hold it, in one set so that one neighbour grid serves both.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -49,8 +50,19 @@ struct FluidParticles {
   // The momentum pass's shares for later blocks of particles (sph::OrderedShares).
   sph::OrderedShares<Vec2> a_shares{Vec2::Zero()};
 
+  // Scene, fixed: the wall particles of fluid.walls[k] have the ids from
+  // first_wall_id[k] up to first_wall_id[k + 1] (the last box: up to the
+  // largest id). Ids survive the sorts; a per-particle field would have to be
+  // permuted with them.
+  std::vector<int> first_wall_id;
+
   std::size_t size() const { return x.size(); }
   bool is_water(std::size_t i) const { return kind[i] == Kind::water; }
+  // Which of fluid.walls wall particle i belongs to.
+  int wall_of(std::size_t i) const {
+    const auto after = std::upper_bound(first_wall_id.begin(), first_wall_id.end(), id[i]);
+    return static_cast<int>(after - first_wall_id.begin()) - 1;
+  }
 
   void add(int particle_id, Kind particle_kind, const Vec2& position, double density, double mass) {
     id.push_back(particle_id);

@@ -105,10 +105,12 @@ FluidParticles build_fluid_scene(const sph::CaseFile& case_file, const FluidPara
       particles.add(next_id++, Kind::water, x, rho, rho * area);
     }
   }
-  for (const auto& box : fluid.walls())
+  for (const auto& box : fluid.walls()) {
+    particles.first_wall_id.push_back(next_id);
     for (const Vec2& x : sph::fill_box(box, p.dx))
       if (within_reach_of_water(fluid.walls(), x, p))
         particles.add(next_id++, Kind::wall, x, p.rho0, p.rho0 * area);
+  }
   particles.resize_derived();
   return particles;
 }

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <sstream>
+#include <string>
 
 #include "fluid_dynamics.hpp"
 #include "fluid_scene.hpp"
@@ -141,6 +142,7 @@ void FluidSolver::remove_thinned_spray() {
     throw sph::RunawayError(message.str());
   }
   spray_removed_ += leaving;
+  wall_forces_before_removal_ = forces_on_walls(P, pairs_, parameters_);
   P.keep_only(kept);
   sph::permute(kept, x_at_sort_);
   spray_left_ = true;  // the grid and the Verlet list still hold the old indices
@@ -170,14 +172,28 @@ sph::Region FluidSolver::interaction_bounds() const {
   return sph::bounds_of(particles_.x, [this](long i) { return particles_.is_water(i); });
 }
 
+std::vector<Vec2> FluidSolver::wall_forces() const {
+  // Thinned spray has no wall in reach: leaving, it took no wall force along.
+  return spray_left_ ? wall_forces_before_removal_
+                     : forces_on_walls(particles_, pairs_, parameters_);
+}
+
 std::vector<sph::Gauge> FluidSolver::gauge_values() const {
   const WaterGauges g = gauges();
-  return {{"front", "m", g.front},
-          {"height", "m", g.height},
-          {"kinetic_energy", "J/m", g.kinetic_energy},
-          {"max_speed", "m/s", g.max_speed},
-          {"water_particles", "1", static_cast<double>(g.water_particles)},
-          {"spray_removed", "1", static_cast<double>(spray_removed_)}};
+  std::vector<sph::Gauge> values = {
+      {"front", "m", g.front},
+      {"height", "m", g.height},
+      {"kinetic_energy", "J/m", g.kinetic_energy},
+      {"max_speed", "m/s", g.max_speed},
+      {"water_particles", "1", static_cast<double>(g.water_particles)},
+      {"spray_removed", "1", static_cast<double>(spray_removed_)}};
+  const std::vector<Vec2> forces = wall_forces();
+  for (std::size_t k = 0; k < forces.size(); ++k) {
+    const std::string wall = "wall" + std::to_string(k);
+    values.push_back({wall + "_force_x", "N/m", forces[k].x()});
+    values.push_back({wall + "_force_y", "N/m", forces[k].y()});
+  }
+  return values;
 }
 
 const char* FluidSolver::runaway_reason(std::size_t i) const {

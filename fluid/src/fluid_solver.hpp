@@ -76,6 +76,9 @@ class FluidSolver {
   // The pairs within 2h of the last step, listed at its start.
   const sph::NeighbourList& pairs() const { return pairs_; }
   WaterGauges gauges() const { return measure(particles_, parameters_); }
+  // The force of the water on each of fluid.walls, N/m (forces_on_walls), at
+  // the last force evaluation.
+  std::vector<Vec2> wall_forces() const;
   sph::Snapshot snapshot() const;
 
  private:
@@ -118,6 +121,9 @@ class FluidSolver {
   long sorts_ = 0;
   bool spray_left_ = false;  // particles left since the last sort
   long spray_removed_ = 0;
+  // Taken before a spray removal, while the lists still matched the indices:
+  // the wall forces until the next step.
+  std::vector<Vec2> wall_forces_before_removal_;
   sph::NeighbourList pairs_;
   double time_ = 0.0;
   long steps_ = 0;

@@ -115,6 +115,7 @@ StepReply Participant::await_step() {
     throw CouplingError("the coupler sent " + std::to_string(s.density_rate_size()) +
                         " density rates for " + std::to_string(sent) + " particles");
   StepReply out{s.dt(), {}, {}, from_proto(s.send_region()), s.stop(), s.whole_step()};
+  out.report_gauges = s.report_gauges();
   out.acceleration.resize(static_cast<std::size_t>(s.acceleration_size() / 2));
   std::copy_n(s.acceleration().data(), 2 * out.acceleration.size(), doubles_of(out.acceleration));
   out.density_rate.assign(s.density_rate().begin(), s.density_rate().end());

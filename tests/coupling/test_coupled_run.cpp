@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <future>
 #include <limits>
+#include <set>
 #include <thread>
 #include <zmq.hpp>
 
@@ -32,6 +33,10 @@ struct CouplerLog {
   std::atomic<long> states{0};  // received so far, the first (before any step) included
   std::vector<double> time, x;  // of each state, and of its particle
   std::vector<double> waiting;  // s, the solver's wait for answers, as each state reports it
+  // The gauges of each state: none, or the force passes the solver had done.
+  std::vector<std::vector<double>> gauges;
+  // The coupler's script: after which states it asks for gauges with the next.
+  std::set<long> asks_for_gauges_after;
 };
 
 // One particle moving at kSpeed. With kSplits, it splits its step as the
@@ -43,7 +48,9 @@ struct CouplerLog {
 template <bool kSplits>
 class MovingParticle {
  public:
-  explicit MovingParticle(const CouplerLog& coupler) : coupler_(coupler) {}
+  explicit MovingParticle(const CouplerLog& coupler,
+                          std::chrono::milliseconds patience = std::chrono::milliseconds(2000))
+      : coupler_(coupler), patience_(patience) {}
 
   void begin_step(double dt) {
     advance(dt);
@@ -67,7 +74,9 @@ class MovingParticle {
   void set_interface_accelerations(const std::vector<Vec2>&) {}
   sph::Region interaction_bounds() const { return sph::bounds_of(std::vector<Vec2>{x_}); }
   double max_smoothing_length() const { return 1e-3; }
-  std::vector<sph::Gauge> gauge_values() const { return {}; }
+  std::vector<sph::Gauge> gauge_values() const {
+    return {{"force_passes", "1", static_cast<double>(force_passes_)}};
+  }
   double time() const { return time_; }
   long steps() const { return steps_; }
   sph::Snapshot snapshot() const { return sph::Snapshot(std::vector<Vec2>{x_}); }
@@ -78,16 +87,18 @@ class MovingParticle {
  private:
   void advance(double dt) { x_.x() += kSpeed * dt; }
   void force_pass() {
+    ++force_passes_;
     const long wanted = steps_ + 2;  // the first state, and this step's
     const auto give_up =
-        std::chrono::steady_clock::now() +
-        (kSplits ? std::chrono::milliseconds(2000) : std::chrono::milliseconds(50));
+        std::chrono::steady_clock::now() + (kSplits ? patience_ : std::chrono::milliseconds(50));
     while (coupler_.states.load() < wanted && std::chrono::steady_clock::now() < give_up)
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     if (coupler_.states.load() < wanted) ++late_;
   }
 
   const CouplerLog& coupler_;
+  std::chrono::milliseconds patience_;
+  long force_passes_ = 0;
   Vec2 x_ = Vec2::Zero();
   double time_ = 0.0;
   long steps_ = 0;
@@ -112,6 +123,8 @@ void play_coupler(zmq::socket_t& socket, CouplerLog& log) {
     log.time.push_back(state.time());
     log.x.push_back(state.position(0));
     log.waiting.push_back(state.waiting());
+    log.gauges.emplace_back();
+    for (const auto& gauge : state.gauges()) log.gauges.back().push_back(gauge.value());
     log.states.fetch_add(1);
     std::this_thread::sleep_for(kAnswerDelay);
     cp::Envelope reply;
@@ -121,6 +134,7 @@ void play_coupler(zmq::socket_t& socket, CouplerLog& log) {
     step.add_acceleration(0.0);
     *step.mutable_send_region() = welcome.welcome().send_region();
     step.set_stop(window == kWindows);
+    step.set_report_gauges(log.asks_for_gauges_after.count(window) > 0);
     cp::send_to(socket, message->identity, reply);
   }
 }
@@ -190,6 +204,29 @@ TEST(CoupledRun, EachStateReportsTheSolversWaitForTheAnswersSoFar) {
   const double delay = std::chrono::duration<double>(kAnswerDelay).count();
   for (std::size_t n = 1; n < log.waiting.size(); ++n)
     EXPECT_GE(log.waiting[n], static_cast<double>(n) * delay) << "state " << n;
+}
+
+// Gauges go out with the first state and with each state the coupler asked
+// for, as the next timeseries row; a solver that splits its step sends such a
+// state after its force pass, so that gauges may read the forces (the water's
+// wall forces do). Other states carry none.
+TEST(CoupledRun, GaugesGoOutOnlyWithTheStatesAskedForAndAfterTheForcePass) {
+  CouplerLog log;
+  log.asks_for_gauges_after = {1, 3};
+  // No patience: the force pass before a state due in the timeseries would
+  // wait for it in vain.
+  MovingParticle<true> solver(log, std::chrono::milliseconds(0));
+  run_against_the_coupler(solver, log);
+  expect_advanced_states(log);
+  ASSERT_EQ(log.gauges.size(), static_cast<std::size_t>(kWindows + 1));
+  for (std::size_t n = 0; n < log.gauges.size(); ++n) {
+    const bool asked = n == 0 || log.asks_for_gauges_after.count(static_cast<long>(n) - 1) > 0;
+    ASSERT_EQ(log.gauges[n].size(), asked ? 1u : 0u) << "state " << n;
+    // State n follows n steps; its own force pass done, or none at the start.
+    if (asked) {
+      EXPECT_EQ(log.gauges[n][0], static_cast<double>(n)) << "state " << n;
+    }
+  }
 }
 
 }  // namespace

@@ -63,9 +63,10 @@ bool contains(const std::string& text, const std::string& part) {
 
 class CouplerWithDummies : public ::testing::Test {
  protected:
-  void write_case(double timeout, int max_substeps = 0) {
+  void write_case(double timeout, int max_substeps = 0, double output_interval = 0.0005) {
     std::ostringstream text;
-    text << "run { end_time: " << kEndTime << " output_interval: 0.0005 snapshot_interval: 0.02 }\n"
+    text << "run { end_time: " << kEndTime << " output_interval: " << output_interval
+         << " snapshot_interval: 0.02 }\n"
          << "fluid { spacing: 0.001 }\nsolid { spacing: 0.001 }\n"
          << "coupling { timeout: " << timeout << " max_substeps: " << max_substeps << " }\n";
     cosph::testing::write_text(dir_.file("case.pbtxt"), text.str());
@@ -161,6 +162,36 @@ TEST_F(CouplerWithDummies, RunToTheEndWithTheSmallerStepAndBalancedForces) {
 
   // The coupler's socket file is not left behind.
   EXPECT_FALSE(std::filesystem::exists(dir_.file("coupler.sock")));
+}
+
+// The solvers send gauges only with the states the coupler asks them for,
+// those due in timeseries.csv: each row must hold the gauges of its own
+// state (the dummies count their steps), not those of an earlier one.
+TEST_F(CouplerWithDummies, EachTimeseriesRowHoldsTheGaugesOfItsOwnState) {
+  constexpr double kOutputInterval = 0.0025;  // 2.5 steps
+  write_case(5.0, 0, kOutputInterval);
+  auto coupler = start_coupler();
+  auto fluid = start_dummy("fluid");
+  auto solid = start_dummy("solid");
+  const auto deadline = Clock::now() + 15s;
+  ASSERT_EQ(coupler->wait_until(deadline), 0) << coupler->err();
+  ASSERT_EQ(fluid->wait_until(deadline), 0) << fluid->err();
+  ASSERT_EQ(solid->wait_until(deadline), 0) << solid->err();
+
+  const Table timeseries(out("timeseries.csv"));
+  const std::size_t rows = timeseries.rows.size();
+  // t = 0, the first step at or past each multiple of the interval, the end.
+  ASSERT_EQ(rows, 9u);
+  EXPECT_EQ(timeseries.at(0, "t"), 0.0);
+  EXPECT_NEAR(timeseries.at(rows - 1, "t"), kEndTime, 1e-12);
+  for (std::size_t r = 0; r < rows; ++r) {
+    const double t = timeseries.at(r, "t");
+    // A dummy counts a step at its end_step, after the step's exchange.
+    const double steps_done = std::max(0.0, std::round(t / kFluidDt) - 1.0);
+    EXPECT_EQ(timeseries.at(r, "fluid_steps"), steps_done) << "row " << r;
+    EXPECT_EQ(timeseries.at(r, "solid_steps"), steps_done) << "row " << r;
+    EXPECT_GE(t, static_cast<double>(r) * kOutputInterval - 1e-12) << "row " << r;
+  }
 }
 
 // Multi-rate: the window is the larger proposal (the solid's 1.5 ms, within 4

@@ -153,6 +153,36 @@ TEST(DamBreak, WallsLeftOutBetweenSortsHaveThePressureOfTheFullSum) {
   EXPECT_GT(walls_with_pressure, 0);
 }
 
+// The water's pairs are equal and opposite, so what the walls take is what
+// holds the water up: sum_k F_k = sum_i m_i (g - a_i) over the water, at any
+// moment of the flow. Checked at each step of the surge, right after the
+// force evaluation the wall forces are taken from.
+TEST(DamBreak, WallForcesAddUpToWhatHoldsTheWaterUp) {
+  const sph::CaseFile case_file = sph::load_case(kCase, {"run.threads=1"});
+  const FluidParameters parameters = read_fluid_parameters(case_file);
+  FluidSolver solver(case_file, parameters);
+  const FluidParticles& P = solver.particles();
+  while (solver.time() < 0.3) {
+    const double dt = solver.step_limits().smallest();
+    solver.begin_step(dt);
+    const std::vector<Vec2> forces = solver.wall_forces();
+    ASSERT_EQ(forces.size(), 3u);
+    Vec2 on_walls = Vec2::Zero(), holding = Vec2::Zero();
+    double weight = 0.0;
+    for (const Vec2& force : forces) on_walls += force;
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      if (!P.is_water(i)) continue;
+      holding += P.m[i] * (parameters.run.gravity - P.a[i]);
+      weight += P.m[i] * parameters.run.gravity.norm();
+    }
+    ASSERT_NEAR(on_walls.x(), holding.x(), 1e-9 * weight) << "t = " << solver.time() << " s";
+    ASSERT_NEAR(on_walls.y(), holding.y(), 1e-9 * weight) << "t = " << solver.time() << " s";
+    solver.end_step(dt);
+  }
+  // The surge reaches the right wall at about 0.25 s and pushes it outwards.
+  EXPECT_GT(solver.wall_forces()[2].x(), 0.0);
+}
+
 // The other tests run on one thread; this one checks that the thread count
 // changes nothing, to the last bit: each particle sums its own pairs in one
 // order whatever thread owns it. At 3 mm, above the size where the loops take

@@ -107,5 +107,38 @@ TEST(StillTank, HoldsHydrostaticPressureAndKeepsEveryParticle) {
   EXPECT_LT(solver.gauges().max_speed, 0.05 * std::sqrt(kG * kDepth));
 }
 
+// The walls carry the hydrostatic forces: the floor the water's weight
+// rho0 g H W, each side wall rho0 g H^2 / 2, outwards (per metre of depth).
+TEST(StillTank, WallsCarryTheHydrostaticForces) {
+  cosph::testing::ScratchDir dir("still_tank");
+  const std::string path = dir.file("still_tank.pbtxt");
+  cosph::testing::write_text(path, kStillTank);
+  omp_set_num_threads(1);
+  const sph::CaseFile case_file = sph::load_case(path);
+  FluidSolver solver(case_file, read_fluid_parameters(case_file));
+  // Averaged over the last 0.1 s, as the pressure above.
+  const double end_time = 0.5, average_from = 0.4;
+  std::vector<Vec2> mean(3, Vec2::Zero());
+  int samples = 0;
+  while (solver.time() < end_time - 1e-12) {
+    solver.step(std::min(solver.step_limits().smallest(), end_time - solver.time()));
+    if (solver.time() < average_from) continue;
+    const std::vector<Vec2> forces = solver.wall_forces();
+    for (std::size_t k = 0; k < mean.size(); ++k) mean[k] += forces[k];
+    ++samples;
+  }
+  for (Vec2& force : mean) force /= samples;
+  const double floor_load = kRho0 * kG * kDepth * kWidth,
+               side_load = 0.5 * kRho0 * kG * kDepth * kDepth;
+  // fluid.walls: the floor, the left wall, the right wall.
+  EXPECT_NEAR(mean[0].y(), -floor_load, 0.01 * floor_load);
+  EXPECT_NEAR(mean[1].x(), -side_load, 0.03 * side_load);
+  EXPECT_NEAR(mean[2].x(), side_load, 0.03 * side_load);
+  // Nothing along the walls: the still water holds no shear.
+  EXPECT_NEAR(mean[0].x(), 0.0, 0.01 * side_load);
+  EXPECT_NEAR(mean[1].y(), 0.0, 0.01 * side_load);
+  EXPECT_NEAR(mean[2].y(), 0.0, 0.01 * side_load);
+}
+
 }  // namespace
 }  // namespace cosph::fluid

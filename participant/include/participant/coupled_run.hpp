@@ -12,7 +12,8 @@
 // coupler's step is a window that the solver covers in as many sub-steps as
 // its own stability needs, the cross-phase terms held over it, and exchanges
 // once, at the window's end. The coupler writes timeseries.csv from the
-// gauges each solver sends; each solver writes its own snapshots.
+// gauges each solver sends with the states it asks them for (those due in it);
+// each solver writes its own snapshots.
 //
 // Solver needs: begin_step, end_step, step_limits, collect_interface,
 // set_interface_accelerations, interaction_bounds, max_smoothing_length,
@@ -25,6 +26,7 @@
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "participant/participant.hpp"
 #include "sphcore/run_control.hpp"
@@ -119,9 +121,15 @@ class CoupledRun {
   }
 
   // The window's last step, with its exchange. The interface has moved to
-  // t + dt: it is labelled so (end_step advances time() only later).
+  // t + dt: it is labelled so (end_step advances time() only later). A state
+  // due in timeseries.csv waits for the forces: its gauges may read them.
   StepReply begin_step_with_exchange(double dt, const sph::Region& region) {
     if constexpr (SplitsItsStep<Solver>) {
+      if (report_gauges_) {
+        solver_.begin_step(dt);
+        send_state(region, solver_.time() + dt, ++windows_);
+        return await_step();
+      }
       solver_.advance_state(dt);
       // The step proposed bounds the force term with the accelerations of the
       // solver's previous force pass: this one's are not known yet. The
@@ -144,11 +152,13 @@ class CoupledRun {
     solver_.collect_interface(region, interface_);
     proposed_dt_ = solver_.step_limits().smallest();
     participant_.send_state(step, time, proposed_dt_, solver_.interaction_bounds(),
-                            solver_.max_smoothing_length(), interface_, solver_.gauge_values());
+                            solver_.max_smoothing_length(), interface_,
+                            report_gauges_ ? solver_.gauge_values() : std::vector<sph::Gauge>{});
   }
 
   StepReply await_step() {
     StepReply reply = participant_.await_step();
+    report_gauges_ = reply.report_gauges;
     solver_.set_interface_accelerations(reply.acceleration);
     // Only a solver with a use for the other phase's share in its continuity
     // (the fluid) takes it; a solid model need not know of it.
@@ -189,6 +199,7 @@ class CoupledRun {
   sph::InterfaceParticles interface_;
   double proposed_dt_ = 0.0;       // at the last exchange: sub-steps are no larger
   long windows_ = 0;               // exchanges so far after the first: the coupler's step count
+  bool report_gauges_ = true;      // the next state goes into timeseries.csv (the first does)
   double largest_overstep_ = 0.0;  // largest step taken whole over the proposed one
   std::string last_snapshot_ = "(none yet)";
   double last_time_ = 0.0;

@@ -21,6 +21,7 @@ struct StepReply {
   sph::Region send_region;              // where to send particles from next time
   bool stop;                            // the run is over
   bool whole_step;                      // take dt in one step, however long (a stability test)
+  bool report_gauges = false;           // send gauges with the next state
 };
 
 class Participant {
