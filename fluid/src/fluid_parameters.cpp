@@ -61,6 +61,8 @@ FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
   }
   p.left_wall_x = fluid.gauges().left_wall_x();
   p.floor_y = fluid.gauges().floor_y();
+  for (const auto& probe : fluid.gauges().pressure_probes())
+    p.pressure_probes.emplace_back(probe.x(), probe.y());
   return p;
 }
 

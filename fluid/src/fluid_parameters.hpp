@@ -1,6 +1,8 @@
 // The case's "fluid" block, validated, with the defaults of SPEC.md applied.
 #pragma once
 
+#include <vector>
+
 #include "sphcore/case_file.hpp"
 #include "sphcore/run_parameters.hpp"
 
@@ -16,6 +18,7 @@ struct FluidParameters {
   double delta;                 // delta-SPH coefficient; 0 = off
   double A, B;                  // Monaghan artificial viscosity
   double left_wall_x, floor_y;  // gauges
+  std::vector<sph::Vec2> pressure_probes;
 };
 
 // Throws sph::ConfigError naming the file, field and reason for bad input.

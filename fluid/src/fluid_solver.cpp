@@ -187,6 +187,9 @@ std::vector<sph::Gauge> FluidSolver::gauge_values() const {
       {"max_speed", "m/s", g.max_speed},
       {"water_particles", "1", static_cast<double>(g.water_particles)},
       {"spray_removed", "1", static_cast<double>(spray_removed_)}};
+  for (std::size_t k = 0; k < parameters_.pressure_probes.size(); ++k)
+    values.push_back({"probe" + std::to_string(k) + "_pressure", "Pa",
+                      probe_pressure(particles_, parameters_, parameters_.pressure_probes[k])});
   const std::vector<Vec2> forces = wall_forces();
   for (std::size_t k = 0; k < forces.size(); ++k) {
     const std::string wall = "wall" + std::to_string(k);

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sphcore/kernel.hpp"
+#include "sphcore/wall_pressure.hpp"
+
 namespace cosph::fluid {
 
 WaterGauges measure(const FluidParticles& P, const FluidParameters& par) {
@@ -24,6 +27,18 @@ WaterGauges measure(const FluidParticles& P, const FluidParameters& par) {
   g.front = front_x - par.left_wall_x;
   g.height = top_y - par.floor_y;
   return g;
+}
+
+double probe_pressure(const FluidParticles& P, const FluidParameters& par, const Vec2& probe) {
+  const double support2 = sph::kernel::kSupport * par.h * sph::kernel::kSupport * par.h;
+  sph::WallPressureSum sum;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (!P.is_water(i)) continue;
+    const Vec2 x_pi = probe - P.x[i];
+    const double r2 = x_pi.squaredNorm();
+    if (r2 < support2) sum.add(P.p[i], P.rho[i], x_pi, sph::kernel::W(std::sqrt(r2), par.h));
+  }
+  return sum.wall_pressure(par.run.gravity);
 }
 
 }  // namespace cosph::fluid

@@ -16,4 +16,11 @@ struct WaterGauges {
 
 WaterGauges measure(const FluidParticles& particles, const FluidParameters& parameters);
 
+// The water's pressure at `probe` as a fixed wall particle there would have
+// it (Adami et al. 2012, sphcore/wall_pressure.hpp): the kernel-weighted mean
+// of the water within 2h, with the hydrostatic correction to the probe's own
+// height. Zero with no water in reach.
+double probe_pressure(const FluidParticles& particles, const FluidParameters& parameters,
+                      const Vec2& probe);
+
 }  // namespace cosph::fluid

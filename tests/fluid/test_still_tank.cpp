@@ -35,6 +35,12 @@ fluid {
   walls { min { x: -0.03 y: -0.03 } max { x: 0.43 y: 0 } }
   walls { min { x: -0.03 y: 0 } max { x: 0 y: 0.3 } }
   walls { min { x: 0.4 y: 0 } max { x: 0.43 y: 0.3 } }
+  gauges {
+    pressure_probes { x: 0 y: 0.05 }
+    pressure_probes { x: 0 y: 0.15 }
+    pressure_probes { x: 0.2 y: 0 }
+    pressure_probes { x: 0.2 y: 0.27 }
+  }
 }
 )";
 
@@ -107,26 +113,34 @@ TEST(StillTank, HoldsHydrostaticPressureAndKeepsEveryParticle) {
   EXPECT_LT(solver.gauges().max_speed, 0.05 * std::sqrt(kG * kDepth));
 }
 
-// The walls carry the hydrostatic forces: the floor the water's weight
-// rho0 g H W, each side wall rho0 g H^2 / 2, outwards (per metre of depth).
-TEST(StillTank, WallsCarryTheHydrostaticForces) {
+// Runs the still tank to 0.5 s on one thread and calls sample(solver) at
+// every step of the last 0.1 s, where the start's sound waves have settled
+// enough to average over (as the pressure above).
+template <class Sample>
+void sample_the_settled_tank(Sample&& sample) {
   cosph::testing::ScratchDir dir("still_tank");
   const std::string path = dir.file("still_tank.pbtxt");
   cosph::testing::write_text(path, kStillTank);
   omp_set_num_threads(1);
   const sph::CaseFile case_file = sph::load_case(path);
   FluidSolver solver(case_file, read_fluid_parameters(case_file));
-  // Averaged over the last 0.1 s, as the pressure above.
   const double end_time = 0.5, average_from = 0.4;
-  std::vector<Vec2> mean(3, Vec2::Zero());
-  int samples = 0;
   while (solver.time() < end_time - 1e-12) {
     solver.step(std::min(solver.step_limits().smallest(), end_time - solver.time()));
-    if (solver.time() < average_from) continue;
+    if (solver.time() >= average_from) sample(solver);
+  }
+}
+
+// The walls carry the hydrostatic forces: the floor the water's weight
+// rho0 g H W, each side wall rho0 g H^2 / 2, outwards (per metre of depth).
+TEST(StillTank, WallsCarryTheHydrostaticForces) {
+  std::vector<Vec2> mean(3, Vec2::Zero());
+  int samples = 0;
+  sample_the_settled_tank([&](const FluidSolver& solver) {
     const std::vector<Vec2> forces = solver.wall_forces();
     for (std::size_t k = 0; k < mean.size(); ++k) mean[k] += forces[k];
     ++samples;
-  }
+  });
   for (Vec2& force : mean) force /= samples;
   const double floor_load = kRho0 * kG * kDepth * kWidth,
                side_load = 0.5 * kRho0 * kG * kDepth * kDepth;
@@ -138,6 +152,26 @@ TEST(StillTank, WallsCarryTheHydrostaticForces) {
   EXPECT_NEAR(mean[0].x(), 0.0, 0.01 * side_load);
   EXPECT_NEAR(mean[1].y(), 0.0, 0.01 * side_load);
   EXPECT_NEAR(mean[2].y(), 0.0, 0.01 * side_load);
+}
+
+// Sensors on the walls' faces read rho0 g (H - y); one above the water, 0.
+TEST(StillTank, PressureProbesReadTheHydrostaticPressure) {
+  std::vector<double> mean(4, 0.0);
+  int samples = 0;
+  sample_the_settled_tank([&](const FluidSolver& solver) {
+    std::size_t k = 0;
+    for (const sph::Gauge& gauge : solver.gauge_values())
+      if (gauge.name.starts_with("probe")) mean.at(k++) += gauge.value;
+    ++samples;
+  });
+  for (double& p : mean) p /= samples;
+  // The probes of kStillTank: left wall at y = 0.05 and 0.15, floor at
+  // x = 0.2, and in the air.
+  for (const auto& [k, y] : {std::pair{0, 0.05}, {1, 0.15}, {2, 0.0}}) {
+    const double hydrostatic = kRho0 * kG * (kDepth - y);
+    EXPECT_NEAR(mean[k], hydrostatic, 0.01 * kRho0 * kG * kDepth) << "probe " << k;
+  }
+  EXPECT_EQ(mean[3], 0.0);
 }
 
 }  // namespace
