@@ -110,6 +110,8 @@ def reason(error):
     if not error:
         return ""
     text = error.split("error:")[-1].strip()
+    # Whichever process printed first: the same words, relayed by the coupler.
+    text = re.sub(r"^(?:coupler: )?(?:fluid|solid) stopped: (?:fluid|solid): ", "", text)
     return text.split("; the run has blown up")[0].split(". Last good")[0][:160]
 
 
