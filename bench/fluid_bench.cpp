@@ -112,7 +112,7 @@ Measurement time_solid(const std::string& case_path, double spacing, int threads
 
 int bench(int argc, char** argv) {
   int steps = 200;
-  bool quick = false, largest = false, fluid_only = false, show_sorts = false;
+  bool quick = false, largest = false, fluid_only = false, solid_only = false, show_sorts = false;
   std::vector<double> spacings{0.008, 0.002, 0.0009};  // about 650, 10 000, 50 000 water particles
   std::vector<int> thread_counts{1, omp_get_num_procs()};
   for (int i = 1; i < argc; ++i) {
@@ -125,6 +125,8 @@ int bench(int argc, char** argv) {
       largest = true;
     else if (option == "--fluid")
       fluid_only = true;
+    else if (option == "--solid")
+      solid_only = true;
     else if (option == "--spacing" && i + 1 < argc)
       spacings = {std::stod(argv[++i])};
     else if (option == "--threads" && i + 1 < argc)
@@ -135,12 +137,14 @@ int bench(int argc, char** argv) {
       show_sorts = true;
     else if (option == "--help" || option == "-h") {
       std::printf(
-          "usage: cosph-bench [--steps N] [--quick | --largest] [--fluid] [--spacing DX]\n"
+          "usage: cosph-bench [--steps N] [--quick | --largest] [--fluid | --solid] [--spacing "
+          "DX]\n"
           "                   [--threads T] [--cpu] [--sorts]\n\n"
           "Particle-steps per second of the fluid solver on the dam break at about 650, 10 000\n"
           "and 50 000 water particles (--quick: the first two; --largest: the last;\n"
           "--spacing: that one spacing instead), and of the solid (--fluid: not), on one thread "
           "and on all cores\n"
+          "(--solid: the solid only)\n"
           "(--threads: on T only). --cpu: CPU time of the busiest thread instead of wall\n"
           "time, for a shared machine (with OMP_WAIT_POLICY=passive on several threads). --sorts: "
           "the fluid's neighbour re-sorts in the timed steps,\n"
@@ -148,7 +152,7 @@ int bench(int argc, char** argv) {
       return 0;
     } else
       throw sph::ConfigError(
-          "usage: cosph-bench [--steps N] [--quick | --largest] [--fluid] [--spacing DX] "
+          "usage: cosph-bench [--steps N] [--quick | --largest] [--fluid | --solid] [--spacing DX] "
           "[--threads T] [--cpu] [--sorts]");
   }
   const std::string case_path = std::string(COSPH_SOURCE_DIR) + "/cases/dam_break.pbtxt";
@@ -156,7 +160,7 @@ int bench(int argc, char** argv) {
   if (largest) spacings = {spacings.back()};
   std::printf("%-6s %10s %8s %14s %22s %10s %8s\n", "solver", "particles", "threads", "ms/step",
               "particle-steps/s", "pairs", "water");
-  for (double spacing : spacings)
+  for (double spacing : solid_only ? std::vector<double>{} : spacings)
     for (int threads : thread_counts) {
       const Measurement m = time_fluid(case_path, spacing, threads, steps);
       std::printf("%-6s %10ld %8d %14.4f %22.4g %10ld %8ld\n", "fluid", m.particles, m.threads,

@@ -38,11 +38,8 @@ inline Mat2 artificial_stress(const Mat2& sigma, double rho, double epsilon) {
   return R_principal(lambda_1) * P_1 + R_principal(lambda_2) * (Mat2::Identity() - P_1);
 }
 
-// Contribution of j to dv_i/dt: m_j f_ij^n (R_i + R_j) . grad_i W_ij, with
-// f_n = f_ij^n. Antisymmetric in i, j like the momentum pair term.
-inline Vec2 artificial_stress_pair(double m_j, double f_n, const Mat2& R_i, const Mat2& R_j,
-                                   const Vec2& grad_W_ij) {
-  return (m_j * f_n) * ((R_i + R_j) * grad_W_ij);
-}
+// j's contribution to dv_i/dt is m_j f_ij^n (R_i + R_j) . grad_i W_ij,
+// antisymmetric in i, j like the momentum pair term, to which the momentum
+// pass adds it (solid_dynamics.cpp).
 
 }  // namespace cosph::solid

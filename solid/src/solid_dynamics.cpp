@@ -1,12 +1,15 @@
 #include "solid_dynamics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "artificial_stress.hpp"
 #include "jaumann_rate.hpp"
 #include "sphcore/kernel.hpp"
+#include "sphcore/ordered_shares.hpp"
 #include "sphcore/outer_product_sum.hpp"
 #include "sphcore/pair_terms.hpp"
 #include "sphcore/parallel.hpp"
@@ -29,15 +32,46 @@ double power(double f, double n) {
   return std::pow(f, n);
 }
 
-// grad v_i = sum_j (v_j - v_i) (x) b_ij with the fit's weights b_ij.
-Mat2 fitted_gradient(const SolidParticles& P, long i, const std::vector<Neighbour>& neighbours,
-                     const sph::QuadraticGradient& fit) {
+// The pairs of particle i within 2h among its candidates: the first `count`
+// entries, in the candidates' order (index order), of the neighbour's index J,
+// W_ij and the gradient factor F_ij (grad_i W_ij = F_ij x_ij). The kernel is
+// taken for all of them in one loop that vectorises: its division, one pair
+// at a time, was the pass's hot spot.
+struct PairsWithin {
+  std::vector<int> J;
+  std::vector<double> W, F;
+  std::size_t count = 0;
+};
+void find_pairs(const SolidParticles& P, long i, std::span<const int> candidates, double support2,
+                const kernel::Value& W_of, const kernel::GradientFactor& gradient_factor,
+                PairsWithin& pairs) {
+  pairs.J.resize(candidates.size()), pairs.W.resize(candidates.size());
+  pairs.F.resize(candidates.size());
+  // F holds r^2 until the kernel loop.
+  pairs.count =
+      sph::filter_within(candidates, P.x, P.x[i], support2, pairs.J.data(), pairs.F.data());
+  for (std::size_t k = 0; k < pairs.count; ++k) {
+    const double r_ij = std::sqrt(pairs.F[k]);
+    pairs.W[k] = W_of(r_ij);
+    pairs.F[k] = gradient_factor(r_ij);
+  }
+}
+
+// grad v_i fitted to be exact for quadratic fields (sphcore/quadratic_gradient.hpp),
+// over all of i's pairs; none where the neighbourhood cannot fix a quadratic.
+std::optional<Mat2> fitted_gradient(const SolidParticles& P, long i, const PairsWithin& pairs,
+                                    double h) {
+  sph::QuadraticGradient fit(h);
+  for (std::size_t k = 0; k < pairs.count; ++k) {
+    const int j = pairs.J[k];
+    fit.add(P.volume[j] * pairs.W[k], P.x[j] - P.x[i]);
+  }
+  if (!fit.solve()) return std::nullopt;
+  // grad v_i = sum_j (v_j - v_i) (x) b_ij with the fit's weights b_ij.
   sph::OuterProductSum grad_v;
-  for (const Neighbour& neighbour : neighbours) {
-    const int j = neighbour.j;
-    const double V_j = P.volume[j];
-    const Vec2 b_ij = fit.gradient_weight(V_j * neighbour.W_ij, P.x[j] - P.x[i]);
-    grad_v.add(P.v[j] - P.v[i], b_ij);
+  for (std::size_t k = 0; k < pairs.count; ++k) {
+    const int j = pairs.J[k];
+    grad_v.add(P.v[j] - P.v[i], fit.gradient_weight(P.volume[j] * pairs.W[k], P.x[j] - P.x[i]));
   }
   return grad_v.matrix();
 }
@@ -46,100 +80,161 @@ Mat2 fitted_gradient(const SolidParticles& P, long i, const std::vector<Neighbou
 
 void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
                    const SolidParameters& par) {
+  const long n = static_cast<long>(P.size());
   const double h = par.h, reach = kernel::kSupport * h, support2 = reach * reach;
   const bool quadratic = par.velocity_gradient == VelocityGradient::quadratic;
   const kernel::Value W_of(h);
   const kernel::GradientFactor gradient_factor(h);
+  const bool use_team = sph::kTeamAtAnySize;
   P.neighbours.resize(P.size());
   P.volume.resize(P.size());
-  sph::parallel_for(P.size(), sph::kTeamAtAnySize,
-                    [&](long i) { P.volume[i] = P.m[i] / P.rho[i]; });
+  P.rate_sums.resize(P.size());
+  if (quadratic) P.fitted_grad_v.resize(P.size());
+  sph::parallel_for(P.size(), use_team, [&](long i) { P.volume[i] = P.m[i] / P.rho[i]; });
 
-  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
-    const Vec2 x_i = P.x[i], v_i = P.v[i];
-    const double rho_i = P.rho[i];
-    std::vector<Neighbour>& neighbours = P.neighbours[i];
-    neighbours.clear();
+  // Each pair is worked out once, by the lower index, which gives the higher
+  // one its share (sph::OrderedShares), and is listed for the momentum pass
+  // there only. An inert particle has no candidates: a particle after it
+  // takes their pair's terms for itself alone.
+  sph::OrderedShares<RateSums>& shares = P.rate_shares;
+  const long blocks = shares.prepare(n, use_team, [&](long i) -> long {
+    const auto c = candidates.candidates(i);
+    return c.empty() ? i : c.back();
+  });
+  const bool threaded = sph::on_team(use_team);
+#pragma omp parallel for schedule(static) if (threaded)
+  for (long b = 0; b < blocks; ++b) {
+    thread_local PairsWithin pairs;
+    for (long i = shares.begin(b); i < shares.end(b); ++i) P.rate_sums[i] = RateSums{};
+    for (long i = shares.begin(b); i < shares.end(b); ++i) {
+      std::vector<Neighbour>& neighbours = P.neighbours[i];
+      neighbours.clear();
+      if (P.inert[i]) continue;
+      find_pairs(P, i, candidates.candidates(i), support2, W_of, gradient_factor, pairs);
+      // The fit needs all of i's pairs, which only this pass sees together.
+      if (quadratic) P.fitted_grad_v[i] = fitted_gradient(P, i, pairs, h);
+      const Vec2 x_i = P.x[i], v_i = P.v[i];
+      const double V_i = P.volume[i];
+      const std::size_t later = static_cast<std::size_t>(
+          std::upper_bound(pairs.J.begin(), pairs.J.begin() + pairs.count, static_cast<int>(i)) -
+          pairs.J.begin());
+      RateSums own;
+      for (std::size_t k = 0; k < later; ++k) {
+        const int j = pairs.J[k];
+        if (!P.inert[j]) continue;
+        const Vec2 x_ij = x_i - P.x[j];
+        own.add(P.volume[j], pairs.F[k] * x_ij, x_ij, v_i - P.v[j]);
+      }
+      neighbours.resize(pairs.count - later);
+      for (std::size_t k = later; k < pairs.count; ++k) {
+        const int j = pairs.J[k];
+        const Vec2 x_ij = x_i - P.x[j];
+        const Vec2 grad_W_ij = pairs.F[k] * x_ij;
+        const Vec2 v_ij = v_i - P.v[j];
+        neighbours[k - later] = {j, pairs.W[k], grad_W_ij};
+        own.add(P.volume[j], grad_W_ij, x_ij, v_ij);
+        shares.share(b, P.rate_sums.data(), j).add(V_i, grad_W_ij, x_ij, v_ij);
+      }
+      P.rate_sums[i] += own;
+    }
+  }
+  shares.merge(P.rate_sums, threaded);
+
+  sph::parallel_for(P.size(), use_team, [&](long i) {
     if (P.inert[i]) {
       P.drho[i] = 0.0;
       P.ds[i] = Mat2::Zero();
       return;
     }
-    sph::GradientSums sums;
-    std::optional<sph::QuadraticGradient> fit;  // only when asked for: the default skips it
-    if (quadratic) fit.emplace(h);
-    double drho_i = 0.0;
-    // The pairs within 2h are listed as the fluid's are (F holds r^2 until
-    // the kernel loop), and the kernel is taken for all of them in one loop
-    // that vectorises: its division, one pair at a time, was the pass's hot
-    // spot.
-    const auto c = candidates.candidates(i);
-    thread_local std::vector<int> J;
-    thread_local std::vector<double> W, F;
-    J.resize(c.size()), W.resize(c.size()), F.resize(c.size());
-    const std::size_t count = sph::filter_within(c, P.x, x_i, support2, J.data(), F.data());
-    for (std::size_t k = 0; k < count; ++k) {
-      const double r_ij = std::sqrt(F[k]);
-      W[k] = W_of(r_ij);
-      F[k] = gradient_factor(r_ij);
-    }
-    neighbours.resize(count);
-    for (std::size_t k = 0; k < count; ++k) {
-      const int j = J[k];
-      const Vec2 x_ij = x_i - P.x[j];
-      const double W_ij = W[k];
-      const Vec2 grad_W_ij = F[k] * x_ij;
-      neighbours[k] = {j, W_ij, grad_W_ij};
-      const double V_j = P.volume[j];
-      const Vec2 v_ij = v_i - P.v[j];
-      // Continuity (SPEC.md "Solid": as the fluid's, without diffusion).
-      drho_i += sph::continuity_pair(rho_i, V_j, v_ij, grad_W_ij);
-      sums.add(V_j * grad_W_ij, x_ij, v_ij);
-      if (fit) fit->add(V_j * W_ij, -x_ij);
-    }
-    const Mat2 grad_v_raw = sums.raw_velocity_gradient();
-    P.L[i] = sph::renormalisation_matrix(sums.M());
+    const RateSums& sums = P.rate_sums[i];
+    // Continuity (SPEC.md "Solid": as the fluid's, without diffusion):
+    //   drho_i/dt = rho_i sum_j V_j v_ij . grad_i W_ij.
+    P.drho[i] = P.rho[i] * sums.volume_divergence;
+    P.L[i] = sph::renormalisation_matrix(sums.gradients.M());
     // grad_v(a, b) = dv_a/dx_b, exact for a linear velocity field even at the
     // free surface, where the bending stress of a plate is largest, or, when
     // fitted, for a quadratic one, which is what bending is. Continuity keeps
     // SPEC.md's form; the fitted trace in its place was tried and left the
     // oscillating plate softer (+6.0 % against +4.8 % at 10 across).
-    const Mat2 grad_v = fit && fit->solve() ? fitted_gradient(P, i, neighbours, *fit)
-                                            : Mat2(grad_v_raw * P.L[i].transpose());
-    P.drho[i] = drho_i;
+    const Mat2 grad_v = quadratic && P.fitted_grad_v[i]
+                            ? *P.fitted_grad_v[i]
+                            : Mat2(sums.gradients.raw_velocity_gradient() * P.L[i].transpose());
     P.ds[i] = P.failed[i] ? Mat2::Zero() : jaumann_rate(P.G[i], P.s[i], grad_v);
   });
 }
 
 void compute_accelerations(SolidParticles& P, const SolidParameters& par) {
+  const long n = static_cast<long>(P.size());
   const double h = par.h;
   const bool with_artificial_stress = par.artificial_stress.enabled;
   const double n_exponent = par.artificial_stress.exponent;
   const double inverse_W_dx = 1.0 / kernel::W(par.dx, h);
+  const bool use_team = sph::kTeamAtAnySize;
+  P.inverse_rho.resize(P.size());
+  sph::parallel_for(P.size(), use_team, [&](long i) { P.inverse_rho[i] = 1.0 / P.rho[i]; });
 
-  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
-    if (P.clamped[i]) {
-      P.a[i] = Vec2::Zero();
-      return;
-    }
-    const Vec2 x_i = P.x[i], v_i = P.v[i];
-    const double rho_i = P.rho[i], c_i = P.c[i];
-    const Mat2 &sigma_L_i = P.sigma_L[i], &R_i = P.R[i];
-    Vec2 a_i = par.run.gravity;  // the coupling's external_a is added by the kicks
-    for (const Neighbour& neighbour : P.neighbours[i]) {
-      const int j = neighbour.j;
-      const Vec2 x_ij = x_i - P.x[j];
-      const double rho_j = P.rho[j];
-      const double Pi_ij = sph::artificial_viscosity(x_ij, v_i - P.v[j], h, 0.5 * (c_i + P.c[j]),
-                                                     0.5 * (rho_i + rho_j), par.A, par.B);
-      a_i += sph::momentum_pair(P.m[j], sigma_L_i, P.sigma_L[j], rho_i, rho_j, Pi_ij,
-                                neighbour.grad_W_ij);
-      if (with_artificial_stress) {
-        const double f_n = power(neighbour.W_ij * inverse_W_dx, n_exponent);
-        a_i += artificial_stress_pair(P.m[j], f_n, R_i, P.R[j], neighbour.grad_W_ij);
+  // Each pair is worked out once, by the lower index, which lists it (the
+  // rates pass), and which gives the higher one its share (sph::OrderedShares,
+  // as the fluid's momentum pass): the bracket below is symmetric in i and j,
+  // and grad_j W_ji = -grad_i W_ij. The pairs of an inert particle act on
+  // clamped particles only, whose accelerations are zero: none is listed.
+  sph::OrderedShares<Vec2>& shares = P.a_shares;
+  const long blocks = shares.prepare(n, use_team, [&](long i) -> long {
+    const std::vector<Neighbour>& neighbours = P.neighbours[i];
+    return neighbours.empty() ? i : neighbours.back().j;
+  });
+  const bool threaded = sph::on_team(use_team);
+#pragma omp parallel for schedule(static) if (threaded)
+  for (long b = 0; b < blocks; ++b) {
+    for (long i = shares.begin(b); i < shares.end(b); ++i) P.a[i].setZero();
+    for (long i = shares.begin(b); i < shares.end(b); ++i) {
+      const std::vector<Neighbour>& neighbours = P.neighbours[i];
+      if (neighbours.empty()) continue;
+      const Vec2 x_i = P.x[i], v_i = P.v[i];
+      const double m_i = P.m[i], rho_i = P.rho[i], c_i = P.c[i];
+      const double inverse_rho_i = P.inverse_rho[i];
+      const Mat2 &sigma_L_i = P.sigma_L[i], &R_i = P.R[i];
+      // The pair's bracket times grad_i W_ij,
+      //   ( (sigma_i L_i + sigma_j L_j) / (rho_i rho_j) - Pi_ij I
+      //     + f_ij^n (R_i + R_j) ) . grad_i W_ij:
+      // j's contribution to dv_i/dt is m_j times it, i's to dv_j/dt -m_i times it.
+      const auto bracket_times_gradient = [&](const Neighbour& neighbour) -> Vec2 {
+        const int j = neighbour.j;
+        const Vec2 x_ij = x_i - P.x[j];
+        const double Pi_ij = sph::artificial_viscosity(x_ij, v_i - P.v[j], h, 0.5 * (c_i + P.c[j]),
+                                                       0.5 * (rho_i + P.rho[j]), par.A, par.B);
+        // By components: as a 2x2 expression Eigen kept the bracket on the
+        // stack and read it back, and the pass ran no faster for halving its pairs.
+        const Mat2& sigma_L_j = P.sigma_L[j];
+        const double inverse_rho_i_rho_j = inverse_rho_i * P.inverse_rho[j];
+        double b_xx = (sigma_L_i(0, 0) + sigma_L_j(0, 0)) * inverse_rho_i_rho_j - Pi_ij;
+        double b_xy = (sigma_L_i(0, 1) + sigma_L_j(0, 1)) * inverse_rho_i_rho_j;
+        double b_yx = (sigma_L_i(1, 0) + sigma_L_j(1, 0)) * inverse_rho_i_rho_j;
+        double b_yy = (sigma_L_i(1, 1) + sigma_L_j(1, 1)) * inverse_rho_i_rho_j - Pi_ij;
+        if (with_artificial_stress) {
+          const Mat2& R_j = P.R[j];
+          const double f_n = power(neighbour.W_ij * inverse_W_dx, n_exponent);
+          b_xx += f_n * (R_i(0, 0) + R_j(0, 0));
+          b_xy += f_n * (R_i(0, 1) + R_j(0, 1));
+          b_yx += f_n * (R_i(1, 0) + R_j(1, 0));
+          b_yy += f_n * (R_i(1, 1) + R_j(1, 1));
+        }
+        const Vec2& g = neighbour.grad_W_ij;
+        return Vec2(b_xx * g.x() + b_xy * g.y(), b_yx * g.x() + b_yy * g.y());
+      };
+      Vec2 a_i = Vec2::Zero();
+      for (const Neighbour& neighbour : neighbours) {
+        const Vec2 bracket_times_gradient_ij = bracket_times_gradient(neighbour);
+        a_i += P.m[neighbour.j] * bracket_times_gradient_ij;
+        shares.share(b, P.a.data(), neighbour.j) -= m_i * bracket_times_gradient_ij;
       }
+      P.a[i] += a_i;
     }
-    P.a[i] = a_i;
+  }
+  shares.merge(P.a, threaded);
+  // The coupling's external_a is added by the kicks.
+  sph::parallel_for(P.size(), use_team, [&](long i) {
+    P.a[i] = P.clamped[i] ? Vec2::Zero() : Vec2(P.a[i] + par.run.gravity);
   });
 }
 

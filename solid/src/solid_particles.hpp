@@ -3,8 +3,11 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "rate_sums.hpp"
+#include "sphcore/ordered_shares.hpp"
 #include "sphcore/types.hpp"
 
 namespace cosph::solid {
@@ -12,7 +15,8 @@ namespace cosph::solid {
 using sph::Mat2;
 using sph::Vec2;
 
-// A neighbour j of particle i, as found by the first pass and reused by the second.
+// A neighbour j > i of particle i, as found by the rates pass and reused by the
+// momentum pass: each pair is listed once, by its lower index.
 struct Neighbour {
   int j;
   double W_ij;
@@ -44,8 +48,15 @@ struct SolidParticles {
   std::vector<Vec2> a;                             // dv/dt
   std::vector<double> drho;                        // drho/dt
   std::vector<double> volume;                      // m / rho, of this step's density
+  std::vector<double> inverse_rho;                 // 1 / rho, of this step's density
   std::vector<Mat2> ds;                            // ds/dt
   std::vector<std::vector<Neighbour>> neighbours;  // of this step's positions
+  std::vector<RateSums> rate_sums;                 // of the rates pass
+  std::vector<std::optional<Mat2>> fitted_grad_v;  // solid.velocity_gradient "quadratic"
+  // The pair passes' spill buffers. Blocks of 128: a solid has a few thousand
+  // particles, and two threads need many blocks each to share the work evenly.
+  sph::OrderedShares<RateSums> rate_shares{RateSums{}, 128};
+  sph::OrderedShares<Vec2> a_shares{Vec2::Zero(), 128};
 
   std::size_t size() const { return x.size(); }
 

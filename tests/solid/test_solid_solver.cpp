@@ -167,10 +167,11 @@ solid {
     const SolidParticles& P = solver.particles();
     for (std::size_t i = 0; i < P.size(); ++i) {
       if (P.inert[i]) continue;  // out of every free particle's reach: no list
+      // Each pair is listed once, by its lower index.
       std::vector<int> listed, all;
       for (const Neighbour& neighbour : P.neighbours[i]) listed.push_back(neighbour.j);
-      for (std::size_t j = 0; j < P.size(); ++j)
-        if (j != i && (P.x[i] - P.x[j]).norm() < support) all.push_back(static_cast<int>(j));
+      for (std::size_t j = i + 1; j < P.size(); ++j)
+        if ((P.x[i] - P.x[j]).norm() < support) all.push_back(static_cast<int>(j));
       std::sort(listed.begin(), listed.end());
       ASSERT_EQ(listed, all) << "particle " << P.id[i] << " at step " << steps;
     }

@@ -2,7 +2,7 @@
 // shares, with every particle's sum taken in one order whatever the thread
 // count (results here are the same bits on any number of threads).
 //
-// The particles are cut into blocks of kBlock consecutive indices, a size of
+// The particles are cut into blocks of `block` consecutive indices, a size of
 // its own, not the thread count's. One thread visits a block's particles in
 // index order. Visiting i, the pass adds i's own sum to sums[i] and sends each
 // later particle j > i its share through share(block, sums, j): into sums[j]
@@ -31,23 +31,23 @@ class OrderedShares {
   // 1024: each of two threads gets many blocks at 10 000 particles and more,
   // while a spill buffer (as long as the reach of a block's pairs past its
   // end, a few hundred particles in the benchmark's scenes) stays small.
-  static constexpr long kBlock = 1024;
+  static constexpr long kDefaultBlock = 1024;
 
-  explicit OrderedShares(const T& zero) : zero_(zero) {}
+  explicit OrderedShares(const T& zero, long block = kDefaultBlock) : zero_(zero), block_(block) {}
 
   // Sets up the blocks for n particles and zeroes their spill buffers.
   // last_neighbour(i) is the highest index i sends a share to (or below i).
   template <class LastNeighbour>
   long prepare(long n, bool use_team, LastNeighbour&& last_neighbour) {
-    const long blocks = (n + kBlock - 1) / kBlock;
+    const long blocks = (n + block_ - 1) / block_;
     end_.resize(blocks);
     reach_end_.resize(blocks);
     base_.resize(blocks);
 #pragma omp parallel for schedule(static) if (on_team(use_team))
     for (long b = 0; b < blocks; ++b) {
-      end_[b] = std::min(n, (b + 1) * kBlock);
+      end_[b] = std::min(n, (b + 1) * block_);
       long reach_end = end_[b];
-      for (long i = b * kBlock; i < end_[b]; ++i)
+      for (long i = begin(b); i < end_[b]; ++i)
         reach_end = std::max(reach_end, last_neighbour(i) + 1);
       reach_end_[b] = reach_end;
     }
@@ -60,8 +60,8 @@ class OrderedShares {
     return blocks;
   }
 
-  static long begin(long block) {
-    return block * kBlock;
+  long begin(long block) const {
+    return block * block_;
   }
   long end(long block) const {
     return end_[block];
@@ -86,6 +86,7 @@ class OrderedShares {
 
  private:
   T zero_;
+  long block_;
   std::vector<long> end_;        // of each block
   std::vector<long> reach_end_;  // one past the highest index each block sends to
   std::vector<long> base_;       // spill_[base_[b] + j] is block b's share for j
