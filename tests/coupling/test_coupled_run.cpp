@@ -201,9 +201,15 @@ TEST(CoupledRun, EachStateReportsTheSolversWaitForTheAnswersSoFar) {
   run_against_the_coupler(solver, log);
   ASSERT_EQ(log.waiting.size(), static_cast<std::size_t>(kWindows + 1));
   EXPECT_EQ(log.waiting[0], 0.0);
+  // Each answer comes kAnswerDelay after the state arrives, and the solver
+  // starts its clock a little after sending: on a loaded machine it may lose
+  // a few ms of each wait there (seen once under ctest -j2). Half the delay a
+  // step still tells a sum from the last wait alone (n >= 3).
   const double delay = std::chrono::duration<double>(kAnswerDelay).count();
-  for (std::size_t n = 1; n < log.waiting.size(); ++n)
-    EXPECT_GE(log.waiting[n], static_cast<double>(n) * delay) << "state " << n;
+  for (std::size_t n = 1; n < log.waiting.size(); ++n) {
+    EXPECT_GT(log.waiting[n], log.waiting[n - 1]) << "state " << n;
+    EXPECT_GE(log.waiting[n], 0.5 * static_cast<double>(n) * delay) << "state " << n;
+  }
 }
 
 // Gauges go out with the first state and with each state the coupler asked
