@@ -137,14 +137,12 @@ int bench(int argc, char** argv) {
       show_sorts = true;
     else if (option == "--help" || option == "-h") {
       std::printf(
-          "usage: cosph-bench [--steps N] [--quick | --largest] [--fluid | --solid] [--spacing "
-          "DX]\n"
-          "                   [--threads T] [--cpu] [--sorts]\n\n"
+          "usage: cosph-bench [--steps N] [--quick | --largest] [--fluid | --solid]\n"
+          "                   [--spacing DX] [--threads T] [--cpu] [--sorts]\n\n"
           "Particle-steps per second of the fluid solver on the dam break at about 650, 10 000\n"
           "and 50 000 water particles (--quick: the first two; --largest: the last;\n"
-          "--spacing: that one spacing instead), and of the solid (--fluid: not), on one thread "
-          "and on all cores\n"
-          "(--solid: the solid only)\n"
+          "--spacing: that one spacing instead), and of the solid (--fluid: not; --solid: the\n"
+          "solid only), on one thread and on all cores\n"
           "(--threads: on T only). --cpu: CPU time of the busiest thread instead of wall\n"
           "time, for a shared machine (with OMP_WAIT_POLICY=passive on several threads). --sorts: "
           "the fluid's neighbour re-sorts in the timed steps,\n"

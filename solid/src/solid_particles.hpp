@@ -53,8 +53,9 @@ struct SolidParticles {
   std::vector<std::vector<Neighbour>> neighbours;  // of this step's positions
   std::vector<RateSums> rate_sums;                 // of the rates pass
   std::vector<std::optional<Mat2>> fitted_grad_v;  // solid.velocity_gradient "quadratic"
-  // The pair passes' spill buffers. Blocks of 128: a solid has a few thousand
-  // particles, and two threads need many blocks each to share the work evenly.
+  // The pair passes' spill buffers. Blocks of 128, not the water's 1024: the
+  // solids' scenes hold a few thousand particles, and two threads need several
+  // blocks each to share the work (at 64 the merge cost more than that gained).
   sph::OrderedShares<RateSums> rate_shares{RateSums{}, 128};
   sph::OrderedShares<Vec2> a_shares{Vec2::Zero(), 128};
 
