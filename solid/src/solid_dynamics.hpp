@@ -16,7 +16,8 @@
 namespace cosph::solid {
 
 // Reads x, v, rho, m, s; writes drho, ds (zero for failed particles, whose
-// deviator stays zero), the renormalisation matrix L and the neighbour lists.
+// deviator stays zero), the renormalisation matrix L and the neighbour lists
+// (each pair once, in the list of its lower index).
 // The candidates (a Verlet list) must hold every j within 2h of i.
 void compute_rates(SolidParticles& particles, const sph::CandidateList& candidates,
                    const SolidParameters& parameters);
