@@ -25,6 +25,7 @@
 #include <algorithm>
 #include <cmath>
 #include <span>
+#include <utility>
 #include <vector>
 
 #include "sphcore/cell_grid.hpp"
@@ -135,8 +136,16 @@ inline double verlet_rebuild_distance(double h) {
 class CandidateList {
  public:
   // The grid must have been built for at least `range` on these positions.
+  // Lists are built for the particles i that are `wanted`, and hold the
+  // candidates j that `kept(i, j)`: a pass that works each pair out once
+  // needs only the later half.
   template <class Wanted>
   void build(const CellGrid& grid, std::span<const Vec2> x, double range, Wanted&& wanted) {
+    build(grid, x, range, std::forward<Wanted>(wanted), [](long, int) { return true; });
+  }
+  template <class Wanted, class Kept>
+  void build(const CellGrid& grid, std::span<const Vec2> x, double range, Wanted&& wanted,
+             Kept&& kept) {
     const double range2 = range * range;
     // About 27 candidates at h = 1.3 dx and a skin of h / 4: room for 40.
     lists_.fill(x.size(), 40, [&](long i, Store& store) {
@@ -150,7 +159,7 @@ class CandidateList {
       detail::for_each_grid_candidate_range(grid, x, i, [&](int begin, int stop) {
         for (int j = begin; j < stop; ++j) {
           j_out[end] = j;
-          end += static_cast<std::size_t>((x_i - x[j]).squaredNorm() < range2);
+          end += static_cast<std::size_t>((x_i - x[j]).squaredNorm() < range2) & kept(i, j);
         }
       });
       store.size = end;
