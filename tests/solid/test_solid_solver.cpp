@@ -19,7 +19,9 @@
 #include "solid_dynamics.hpp"
 #include "solid_solver.hpp"
 #include "solid_test_cases.hpp"
+#include "sphcore/kernel.hpp"
 #include "sphcore/permutation.hpp"
+#include "sphcore/renormalisation.hpp"
 #include "thread_count.hpp"
 #include "von_mises_failure.hpp"
 
@@ -179,6 +181,50 @@ solid {
   }
   // The falling block came many skins closer to the clamped one.
   EXPECT_LT(testing::lowest_y(solver.particles(), 0.0), start_y - 4.0 * skin);
+}
+
+// The rates pass works each pair out once and lists the later half; an inert
+// clamped particle has no list, and a particle after it takes their pair for
+// itself. Every particle's renormalisation matrix must still be that of all
+// its neighbours within 2h, the clamped block's too, where inert particles
+// border active ones.
+TEST(SolidSolver, RenormalisationSumsOverEveryNeighbourInertOnesIncluded) {
+  const sph::CaseFile case_file = sph::load_case(testing::write_case("halves", R"(
+run { gravity { x: 0 y: -9.81 } end_time: 1 }
+solid {
+  spacing: 0.01 density: 1000 youngs_modulus: 1e6 poisson_ratio: 0.3
+  body { min { x: 0 y: 0.04 } max { x: 0.1 y: 0.08 } }
+  body { min { x: -0.05 y: -0.1 } max { x: 0.15 y: 0 } }
+  clamp { min { x: -0.05 y: -0.1 } max { x: 0.15 y: 0 } }
+}
+)"));
+  SolidSolver solver(case_file, read_solid_parameters(case_file));
+  for (int step = 0; step < 3; ++step) solver.step(solver.step_limits().smallest());
+  const SolidParticles& P = solver.particles();
+  const double h = solver.parameters().h, support = 2.0 * h;
+  const sph::kernel::GradientFactor gradient_factor(h);
+  int inert = 0, bordering_inert = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.inert[i]) {
+      ++inert;
+      continue;
+    }
+    Mat2 M = Mat2::Zero();
+    bool borders_inert = false;
+    for (std::size_t j = 0; j < P.size(); ++j) {
+      const Vec2 x_ij = P.x[i] - P.x[j];
+      const double r = x_ij.norm();
+      if (j == i || r >= support) continue;
+      M += sph::renormalisation_term(P.volume[j], gradient_factor(r) * x_ij, x_ij);
+      borders_inert = borders_inert || P.inert[j];
+    }
+    bordering_inert += borders_inert;
+    const Mat2 L = sph::renormalisation_matrix(M);
+    ASSERT_LT((L - P.L[i]).norm(), 1e-9 * L.norm()) << "particle " << P.id[i];
+  }
+  // The case has what the test is about.
+  EXPECT_GT(inert, 0);
+  EXPECT_GT(bordering_inert, 0);
 }
 
 // A plate flung at a large fraction of its sound speed blows up; cosph-solid
