@@ -42,9 +42,9 @@ void SolidSolver::sort() {
   sph::permute(grid_.order(), P.id, P.x, P.v, P.x0, P.rho, P.m, P.s, P.K, P.G, P.c, P.sigma_y,
                P.clamped, P.failed, P.inert, P.external_a);
   x_at_sort_ = P.x;
-  // The rates pass works each pair out once, from its lower index, and needs
-  // the later candidates only, and an inert particle's (it has no list);
-  // the quadratic fit needs a particle's whole neighbourhood.
+  // The rates pass works each pair out once, from its lower index: it needs
+  // a particle's later candidates only, and its inert ones (an inert
+  // particle has no list of its own). The quadratic fit needs them all.
   const bool whole = parameters_.velocity_gradient == VelocityGradient::quadratic;
   candidates_.build(
       grid_, P.x, reach, [&P](long i) { return !P.inert[i]; },
