@@ -24,8 +24,7 @@ struct RateSums {
   }
   RateSums& operator+=(const RateSums& other) {
     volume_divergence += other.volume_divergence;
-    gradients.M_x += other.gradients.M_x, gradients.M_y += other.gradients.M_y;
-    gradients.Gv_x += other.gradients.Gv_x, gradients.Gv_y += other.gradients.Gv_y;
+    gradients += other.gradients;
     return *this;
   }
 };

@@ -145,12 +145,9 @@ TEST(SolidSolver, ResultDoesNotDependOnTheThreadCount) {
                           [](const Vec2& v) { return v.norm() > 0.1; }));  // it swings
 }
 
-// The Verlet list (sph::kSkinOverH) is rebuilt only when a particle has moved
-// about skin / 2. A block 40 mm above a clamped one, beyond the kernel's reach,
-// falls many skins towards it and meets particles it was not listed with: at every step each
-// particle must still have exactly the neighbours a search of all pairs finds.
-TEST(SolidSolver, NeighboursStayCompleteAsABlockFallsOntoAnother) {
-  const sph::CaseFile case_file = sph::load_case(testing::write_case("verlet", R"(
+// A block 40 mm above a clamped one, beyond the kernel's reach; the clamped
+// block's lower rows are out of every free particle's reach (inert).
+const char* kBlockAboveClampedBlock = R"(
 run { gravity { x: 0 y: -9.81 } end_time: 1 }
 solid {
   spacing: 0.01 density: 1000 youngs_modulus: 1e6 poisson_ratio: 0.3
@@ -158,7 +155,15 @@ solid {
   body { min { x: -0.05 y: -0.06 } max { x: 0.15 y: 0 } }
   clamp { min { x: -0.05 y: -0.06 } max { x: 0.15 y: 0 } }
 }
-)"));
+)";
+
+// The Verlet list (sph::kSkinOverH) is rebuilt only when a particle has moved
+// about skin / 2. A block 40 mm above a clamped one, beyond the kernel's reach,
+// falls many skins towards it and meets particles it was not listed with: at every step each
+// particle must still have exactly the neighbours a search of all pairs finds.
+TEST(SolidSolver, NeighboursStayCompleteAsABlockFallsOntoAnother) {
+  const sph::CaseFile case_file =
+      sph::load_case(testing::write_case("verlet", kBlockAboveClampedBlock));
   SolidSolver solver(case_file, read_solid_parameters(case_file));
   const double support = 2.0 * solver.parameters().h,
                skin = sph::kSkinOverH * solver.parameters().h;
@@ -189,15 +194,8 @@ solid {
 // its neighbours within 2h, the clamped block's too, where inert particles
 // border active ones.
 TEST(SolidSolver, RenormalisationSumsOverEveryNeighbourInertOnesIncluded) {
-  const sph::CaseFile case_file = sph::load_case(testing::write_case("halves", R"(
-run { gravity { x: 0 y: -9.81 } end_time: 1 }
-solid {
-  spacing: 0.01 density: 1000 youngs_modulus: 1e6 poisson_ratio: 0.3
-  body { min { x: 0 y: 0.04 } max { x: 0.1 y: 0.08 } }
-  body { min { x: -0.05 y: -0.1 } max { x: 0.15 y: 0 } }
-  clamp { min { x: -0.05 y: -0.1 } max { x: 0.15 y: 0 } }
-}
-)"));
+  const sph::CaseFile case_file =
+      sph::load_case(testing::write_case("halves", kBlockAboveClampedBlock));
   SolidSolver solver(case_file, read_solid_parameters(case_file));
   for (int step = 0; step < 3; ++step) solver.step(solver.step_limits().smallest());
   const SolidParticles& P = solver.particles();

@@ -30,6 +30,12 @@ struct GradientSums {
     Gv_x -= v_ij.x() * Vg;
     Gv_y -= v_ij.y() * Vg;
   }
+  // Another part of the same sums (a pass that hands pairs' terms on).
+  GradientSums& operator+=(const GradientSums& other) {
+    M_x += other.M_x, M_y += other.M_y;
+    Gv_x += other.Gv_x, Gv_y += other.Gv_y;
+    return *this;
+  }
   Mat2 M() const {
     Mat2 m;
     m << M_x, M_y;
