@@ -79,7 +79,7 @@ void SolidSolver::update_stress(Including including) {
     if (par.fracture.enabled && !P.failed[i] && yields(sigma, P.sigma_y[i])) P.failed[i] = 1;
     if (P.failed[i]) P.s[i] = Mat2::Zero();
     P.sigma[i] = P.failed[i] ? failed_stress(P.p[i]) : sigma;
-    P.sigma_L[i] = P.sigma[i] * P.L[i];
+    P.sigma_L[i] = sph::product_2x2(P.sigma[i], P.L[i]);
     P.R[i] = par.artificial_stress.enabled
                  ? artificial_stress(P.sigma[i], P.rho[i], par.artificial_stress.epsilon)
                  : Mat2::Zero();

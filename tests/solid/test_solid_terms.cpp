@@ -42,6 +42,20 @@ TEST(JaumannRate, RigidRotationRotatesTheStressWithoutGrowingIt) {
   EXPECT_GT((s - wrong_way).norm(), 0.1 * s0.norm());
 }
 
+// The by-components form against SPEC.md's in matrices,
+//   2G (e - (1/3) tr(e) I) + s w^T + w s,
+// for a velocity gradient and a stress with no symmetry to hide an index.
+TEST(JaumannRate, ByComponentsIsTheMatrixForm) {
+  const double G = 3.0e6;
+  Mat2 grad_v, s;
+  grad_v << 0.7, -1.9, 0.4, -0.2;
+  s << 2.0e3, -3.0e2, 5.0e2, -1.5e3;
+  const Mat2 e = 0.5 * (grad_v + grad_v.transpose()), w = 0.5 * (grad_v - grad_v.transpose());
+  const Mat2 expected =
+      2.0 * G * (e - e.trace() / 3.0 * Mat2::Identity()) + s * w.transpose() + w * s;
+  EXPECT_LT((jaumann_rate(G, s, grad_v) - expected).norm(), 1e-14 * expected.norm());
+}
+
 // Uniaxial strain eps along x (e_yy = 0), loaded slowly through the rates:
 // sigma_xx = (K + 4G/3) eps, sigma_yy = (K - 2G/3) eps, sigma_xy = 0.
 TEST(HookeAndJaumann, UniaxialStrainGivesTheLongitudinalAndLateralModuli) {

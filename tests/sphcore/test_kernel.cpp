@@ -184,4 +184,35 @@ TEST(Renormalisation, SparseSupportFallsBackToIdentity) {
   EXPECT_LT((sph::renormalisation_matrix(M) * M - Mat2::Identity()).norm(), 1e-14);
 }
 
+// The by-components form that the passes use is renormalisation_matrix(M)
+// and (raw gradient) L^T, for a neighbourhood with no symmetry to hide a
+// transposed index.
+TEST(Renormalisation, ByComponentsIsTheMatrixForm) {
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+  const auto random_vector = [&] { return Vec2(uniform(random), uniform(random)); };
+  int sparse = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    sph::GradientSums sums;
+    // Mostly a full support (det M near 1), but every fourth one sparse.
+    const double spread = trial % 4 == 3 ? 0.2 : 1.0;
+    for (int j = 0; j < 12; ++j) {
+      const Vec2 x_ij = spread * random_vector();
+      sums.add(-x_ij + 0.3 * random_vector(), x_ij, random_vector());
+    }
+    const Mat2 M = sums.M(), raw = sums.raw_velocity_gradient();
+    const Mat2 L = sph::renormalisation_matrix(M);
+    const sph::RenormalisedGradient by_components = sph::renormalised_gradient(sums);
+    EXPECT_EQ(by_components.renormalised, sph::can_renormalise(M)) << "trial " << trial;
+    EXPECT_LT((by_components.L - L).norm(), 1e-14 * L.norm()) << "trial " << trial;
+    const Mat2 grad_v = raw * L.transpose();
+    EXPECT_LT((by_components.grad_v - grad_v).norm(), 1e-14 * grad_v.norm()) << "trial " << trial;
+    if (by_components.renormalised)
+      EXPECT_GT((grad_v - raw * L).norm(), 1e-3 * grad_v.norm()) << "the transpose matters here";
+    else
+      ++sparse;
+  }
+  EXPECT_EQ(sparse, 5) << "both branches are tried";
+}
+
 }  // namespace

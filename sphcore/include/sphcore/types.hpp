@@ -24,4 +24,17 @@ inline const double* doubles_of(const std::vector<Mat2>& matrices) {
   return matrices.empty() ? nullptr : matrices.front().data();
 }
 
+// A B of 2x2 matrices, by components. Eigen's product builds its result as
+// two column halves on the stack and then reads it back whole, and that read
+// stalls (store forwarding fails across the halves): perf put a quarter of
+// the solid's stress update on it.
+inline Mat2 product_2x2(const Mat2& A, const Mat2& B) {
+  Mat2 AB;
+  AB(0, 0) = A(0, 0) * B(0, 0) + A(0, 1) * B(1, 0);
+  AB(1, 0) = A(1, 0) * B(0, 0) + A(1, 1) * B(1, 0);
+  AB(0, 1) = A(0, 0) * B(0, 1) + A(0, 1) * B(1, 1);
+  AB(1, 1) = A(1, 0) * B(0, 1) + A(1, 1) * B(1, 1);
+  return AB;
+}
+
 }  // namespace sph
