@@ -6,6 +6,9 @@
 // "cosph-fluid" and the solid's program for a coupled case. The solid's
 // program is "cosph-solid" or "cosph-solid-tl" after solid.model, or the
 // absolute path of the program solid.executable names (solid_executable.hpp).
+// A multi-rate coupled case (coupling.max_substeps > 1, the solid at its own
+// step) ends with a line "separate-cores": the launcher then gives each solver
+// cores of its own (README, "Speed").
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -64,6 +67,9 @@ int plan(int argc, char** argv) {
   if (fluid && !solid) programs = {"cosph-fluid"};
   if (solid) programs.push_back(cosph::coupling::solid_program(case_file, executable_search()));
   for (const std::string& program : programs) std::cout << program << "\n";
+  const auto& coupling = case_file.config.coupling();
+  if (fluid && solid && coupling.max_substeps() > 1 && coupling.solid_step() != "fluid")
+    std::cout << "separate-cores\n";
   return 0;
 }
 

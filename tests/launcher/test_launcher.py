@@ -178,6 +178,31 @@ class LauncherTest(unittest.TestCase):
         self.assertEqual(rc, 0, err)
         self.assertNotIn("OMP_WAIT_POLICY", err)
 
+    def fake_cores(self, name):
+        return json.loads((self.state / f"{name}.cores").read_text())
+
+    @unittest.skipIf(len(os.sched_getaffinity(0)) < 2, "needs two cores")
+    def test_multi_rate_run_gives_each_solver_cores_of_its_own(self):
+        allowed = sorted(os.sched_getaffinity(0))
+        rc, _, err = self.run_case(FAKE_PLAN=THREE + " separate-cores", FAKE_STEPS="2")
+        self.assertEqual(rc, 0, err)
+        fluid, solid = self.fake_cores("cosph-fluid"), self.fake_cores("cosph-solid")
+        self.assertEqual(sorted(fluid + solid), allowed)   # disjoint, and all of them
+        self.assertGreaterEqual(len(fluid), len(solid))
+        self.assertEqual(self.fake_cores("cosph-coupler"), allowed)
+        self.assertIn("cosph: multi-rate run: cosph-fluid on core", err)
+        command = (self.out / "command.txt").read_text()
+        self.assertIn(f"taskset -c {','.join(map(str, solid))} ", command)
+        # Asked not to, or synchronised: every process may run anywhere.
+        for extra, plan in (("--no-pin", THREE + " separate-cores"), (None, THREE)):
+            rc, _, err = self.run_case(*([extra] if extra else []), FAKE_PLAN=plan,
+                                       FAKE_STEPS="2")
+            self.assertEqual(rc, 0, err)
+            for name in THREE.split():
+                self.assertEqual(self.fake_cores(name), allowed, (extra, plan, name))
+            self.assertNotIn("multi-rate run", err)
+            self.assertNotIn("taskset", (self.out / "command.txt").read_text())
+
     def test_endpoint_option(self):
         rc, _, err = self.run_case("--endpoint", "tcp://127.0.0.1:5555",
                                    FAKE_PLAN="cosph-fluid cosph-solid", FAKE_STEPS="2")

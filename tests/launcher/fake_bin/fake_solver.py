@@ -1,7 +1,8 @@
 """Behaviour shared by the fake cosph-fluid, cosph-solid and cosph-coupler.
 
 Steered by environment variables (NAME lists are comma-separated exe names):
-  FAKE_DIR          folder for <exe>.pid, <exe>.args (JSON argv), <exe>.sigint,
+  FAKE_DIR          folder for <exe>.pid, <exe>.args (JSON argv), <exe>.cores
+                    (JSON list of the cores it may run on), <exe>.sigint,
                     <exe>.grandchild.pid
   FAKE_STEPS        progress lines before a normal exit (default 10)
   FAKE_INTERVAL     seconds between progress lines (default 0.05)
@@ -57,6 +58,7 @@ def main(name):
                                        stdout=subprocess.DEVNULL)
             _write(os.path.join(state, name + ".grandchild.pid"), str(sleeper.pid))
         _write(os.path.join(state, name + ".args"), json.dumps(args))
+        _write(os.path.join(state, name + ".cores"), json.dumps(sorted(os.sched_getaffinity(0))))
         _write(os.path.join(state, name + ".pid"), str(os.getpid()))
 
     print(f"starting, case {args[args.index('--case') + 1]}", flush=True)
