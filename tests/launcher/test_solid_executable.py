@@ -109,6 +109,25 @@ class ThirdPartySolid(unittest.TestCase):
         self.assertEqual(proc.returncode, 0, proc.stderr)
         self.assertIn("my-solid", self.started())
 
+    @unittest.skipIf(len(os.sched_getaffinity(0)) < 2, "needs two cores")
+    def test_multi_rate_plan_gives_each_solver_cores_of_its_own(self):
+        """The real plan asks for it in a multi-rate run only, and the solid of
+        the user's own gets the second half of the cores as cosph-solid would."""
+        self.install(self.cases)
+        allowed = sorted(os.sched_getaffinity(0))
+        cores = {}
+        for max_substeps in (0, 32):
+            text = coupled_case("my-solid").replace(
+                "coupling {", f"coupling {{\n  max_substeps: {max_substeps}", 1)
+            _, proc = self.launch(text)
+            self.assertEqual(proc.returncode, 0, proc.stderr)
+            cores[max_substeps] = {name: json.loads((self.state / f"{name}.cores").read_text())
+                                   for name in ("cosph-coupler", "cosph-fluid", "my-solid")}
+        self.assertEqual(cores[0], dict.fromkeys(cores[0], allowed))   # synchronised: free
+        self.assertEqual(cores[32]["cosph-coupler"], allowed)
+        self.assertEqual(sorted(cores[32]["cosph-fluid"] + cores[32]["my-solid"]), allowed)
+        self.assertEqual(cores[32]["my-solid"], allowed[(len(allowed) + 1) // 2:])
+
     def test_missing_program_is_refused_naming_file_field_and_reason(self):
         case, proc = self.launch(coupled_case("no-such-solid"))
         self.assertEqual(proc.returncode, 2, proc.stderr)
