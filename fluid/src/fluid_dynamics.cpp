@@ -68,11 +68,11 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
       sums.add(Vg, x_ij, v_ij);
       grad_rho_raw += (rho_j - rho_i) * Vg;
     }
-    const sph::RenormalisedGradient renormalised = sph::renormalised_gradient(sums);
+    const sph::RenormalisedGradient gradient = sph::renormalised_gradient(sums);
     P.drho[i] = drho_i + diffusion * diffusion_i;
-    P.spray[i] = !wall_in_reach && !renormalised.renormalised;
-    P.grad_rho_next[i] = renormalised.L * grad_rho_raw;
-    P.tau[i] = viscous_stress(par.mu, renormalised.grad_v);
+    P.spray[i] = !wall_in_reach && !gradient.renormalised;
+    P.grad_rho_next[i] = gradient.L * grad_rho_raw;
+    P.tau[i] = viscous_stress(par.mu, gradient.grad_v);
   }
   P.grad_rho.swap(P.grad_rho_next);
 }

@@ -150,14 +150,14 @@ void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
     // Continuity (SPEC.md "Solid": as the fluid's, without diffusion):
     //   drho_i/dt = rho_i sum_j V_j v_ij . grad_i W_ij.
     P.drho[i] = P.rho[i] * sums.volume_divergence;
-    const sph::RenormalisedGradient renormalised = sph::renormalised_gradient(sums.gradients);
-    P.L[i] = renormalised.L;
+    const sph::RenormalisedGradient gradient = sph::renormalised_gradient(sums.gradients);
+    P.L[i] = gradient.L;
     // grad_v(a, b) = dv_a/dx_b, exact for a linear velocity field even at the
     // free surface, where the bending stress of a plate is largest, or, when
     // fitted, for a quadratic one, which is what bending is. Continuity keeps
     // SPEC.md's form; the fitted trace in its place was tried and left the
     // oscillating plate softer (+6.0 % against +4.8 % at 10 across).
-    const Mat2 grad_v = quadratic && P.fitted_grad_v[i] ? *P.fitted_grad_v[i] : renormalised.grad_v;
+    const Mat2 grad_v = quadratic && P.fitted_grad_v[i] ? *P.fitted_grad_v[i] : gradient.grad_v;
     P.ds[i] = P.failed[i] ? Mat2::Zero() : jaumann_rate(P.G[i], P.s[i], grad_v);
   });
 }

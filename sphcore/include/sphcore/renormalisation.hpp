@@ -51,6 +51,9 @@ struct GradientSums {
 // L_i = M_i^-1; the identity where the support is too sparse to invert
 // reliably (a lone particle or a thin sheet of spray), since there the
 // correction would amplify noise instead of removing a bias.
+// These matrix forms (with M() and raw_velocity_gradient() above) are the
+// rule as written: the particle passes take it by components, through
+// renormalised_gradient below, and the tests hold that form to these.
 constexpr double kSmallestDeterminant = 0.25;  // a full support gives det(M) = 1
 inline bool can_renormalise(const Mat2& M) {
   return M.determinant() > kSmallestDeterminant;
@@ -63,8 +66,7 @@ inline Mat2 renormalisation_matrix(const Mat2& M) {
 // L_i, and the velocity gradient grad v_i = (raw gradient) L_i^T, of a
 // particle's sums, by components: as renormalisation_matrix(sums.M()) and a
 // 2x2 product they went through the stack, and reading each matrix back
-// whole from two half-width stores stalled every particle (perf: a tenth of
-// the solid's step).
+// whole from two half-width stores stalled every particle's rate.
 struct RenormalisedGradient {
   Mat2 L;
   Mat2 grad_v;        // grad_v(a, b) = dv_a/dx_b
