@@ -1,8 +1,8 @@
 // The neighbour passes of one fluid step (SPEC.md "Fluid").
 //
-// 1. continuity_and_gradients: lists the step's pairs, and from them drho/dt
-//    (continuity with delta-SPH diffusion) and, for the next passes, the
-//    renormalised density and velocity gradients and the viscous stress.
+// 1. continuity_and_gradients: drho/dt from continuity with delta-SPH
+//    diffusion, and, for the next passes, the renormalised density and velocity
+//    gradients and the viscous stress.
 // 2. wall_pressure: the walls' pressure extrapolated from the water (Adami et
 //    al. 2012), once the water's new pressure is known.
 // 3. accelerations: dv/dt from the momentum equation, the one force evaluation.
@@ -19,13 +19,11 @@
 
 namespace cosph::fluid {
 
-// Lists this step's pairs (within 2h) from the Verlet list `candidates`, for
-// the passes after it. Reads grad_rho (of the previous step: the diffusion's
-// correction term lags one step, which keeps this to one pass) and writes
-// drho, tau and the new grad_rho.
-void compute_continuity_and_gradients(FluidParticles& particles,
-                                      const sph::CandidateList& candidates,
-                                      sph::NeighbourList& pairs, const FluidParameters& parameters);
+// Reads grad_rho (of the previous step: the diffusion's correction term lags
+// one step, which keeps this to one pass) and writes drho, tau and the new
+// grad_rho.
+void compute_continuity_and_gradients(FluidParticles& particles, const sph::NeighbourList& pairs,
+                                      const FluidParameters& parameters);
 
 // The wall particles with water closer than `reach`, in index order. With
 // reach = 2h + skin at a sort, no other wall has water within 2h until the

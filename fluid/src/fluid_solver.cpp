@@ -21,27 +21,29 @@ FluidSolver::FluidSolver(const sph::CaseFile& case_file, const FluidParameters& 
       eos_(parameters.rho0, parameters.c0),
       particles_(build_fluid_scene(case_file, parameters)),
       skin_(sph::kSkinOverH * parameters.h) {
-  sort_and_list_candidates();
-  // Only for grad_rho, and the pairs.
-  compute_continuity_and_gradients(particles_, candidates_, pairs_, parameters_);
+  find_neighbours(true);
+  compute_continuity_and_gradients(particles_, pairs_, parameters_);  // only for grad_rho
   update_pressure();
   compute_forces();
 }
 
-void FluidSolver::sort_and_list_candidates() {
+void FluidSolver::find_neighbours(bool sort) {
   FluidParticles& P = particles_;
-  // The grid, built for 2h + skin, also serves the wall pressure until the
-  // next sort: a water particle within 2h of a (fixed) wall particle now was
-  // within 2h + skin / 2 of it then.
-  const double reach = sph::kernel::kSupport * parameters_.h + skin_;
-  grid_.build(P.x, reach, 2);
-  P.permute_state(grid_.order());
-  x_at_sort_ = P.x;
-  candidates_.build(grid_, P.x, reach, [&P](long i) { return P.is_water(i); });
-  // Walls far from the water cost nothing until the next sort.
-  walls_in_reach_ = walls_in_reach(P, grid_, reach);
-  rest_walls_out_of_reach(P, walls_in_reach_, eos_);
-  ++sorts_;
+  if (sort) {
+    // The grid, built for 2h + skin, also serves the wall pressure until the
+    // next sort: a water particle within 2h of a (fixed) wall particle now was
+    // within 2h + skin / 2 of it then.
+    const double reach = sph::kernel::kSupport * parameters_.h + skin_;
+    grid_.build(P.x, reach, 2);
+    P.permute_state(grid_.order());
+    x_at_sort_ = P.x;
+    candidates_.build(grid_, P.x, reach, [&P](long i) { return P.is_water(i); });
+    // Walls far from the water cost nothing until the next sort.
+    walls_in_reach_ = walls_in_reach(P, grid_, reach);
+    rest_walls_out_of_reach(P, walls_in_reach_, eos_);
+    ++sorts_;
+  }
+  pairs_.build(candidates_, P.x, parameters_.h);
 }
 
 void FluidSolver::update_pressure() {
@@ -83,9 +85,9 @@ void FluidSolver::advance_state(double dt) {
     return (P.x[i] - x_at_sort_[i]).squaredNorm();
   });
   const double rebuild_at = sph::verlet_rebuild_distance(parameters_.h);
-  if (spray_left_ || moved2 > rebuild_at * rebuild_at) sort_and_list_candidates();
+  find_neighbours(spray_left_ || moved2 > rebuild_at * rebuild_at);
   spray_left_ = false;
-  compute_continuity_and_gradients(P, candidates_, pairs_, parameters_);
+  compute_continuity_and_gradients(P, pairs_, parameters_);
   sph::parallel_for(P.size(), [&](long i) {
     if (P.is_water(i)) P.rho[i] += dt * P.drho[i];
   });

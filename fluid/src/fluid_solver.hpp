@@ -82,9 +82,9 @@ class FluidSolver {
   sph::Snapshot snapshot() const;
 
  private:
-  // Re-sorts the particles and rebuilds the Verlet list, from which each
-  // step's continuity pass lists that step's pairs.
-  void sort_and_list_candidates();
+  // Lists this step's pairs from the Verlet list, first re-sorting the
+  // particles and rebuilding that list if it may have missed one.
+  void find_neighbours(bool sort);
   void update_pressure();
   void check_state() const;
   // False when every particle passes runaway_reason's tests with room to

@@ -6,7 +6,6 @@
 #include <numbers>
 #include <random>
 #include <set>
-#include <span>
 #include <utility>
 #include <vector>
 
@@ -96,44 +95,6 @@ TEST(NeighbourList, FromAVerletListMatchesBruteForceAfterAMove) {
   // Not vacuous: the move changed which pairs are within 2h.
   EXPECT_NE(expected, before);
   EXPECT_GT(expected.size(), 10000u);
-}
-
-// A pass run inside the build (the fluid's continuity pass) sees every
-// particle once, with the list and gradient factors the later passes read
-// (none for a particle without candidates).
-TEST(NeighbourList, VisitsEachParticleWithItsFinishedList) {
-  std::mt19937 random(7);
-  const double dx = 0.01, h = 1.3 * dx, skin = sph::kSkinOverH * h, range = 2.0 * h + skin;
-  sph::CellGrid grid;
-  std::vector<Vec2> x = sorted_lattice(dx, random, grid, range);
-  auto wanted = [](long i) { return i % 3 != 0; };
-  sph::CandidateList candidates;
-  candidates.build(grid, x, range, wanted);
-  move_each_by(x, sph::verlet_rebuild_distance(h), random);
-
-  struct Seen {
-    int visits = 0;
-    std::vector<int> neighbours;
-    std::vector<double> factors;
-  };
-  std::vector<Seen> seen(x.size());
-  sph::NeighbourList list;
-  list.build(candidates, x, h,
-             [&](long i, std::span<const int> neighbours, std::span<const double> factors) {
-               Seen& s = seen[static_cast<std::size_t>(i)];
-               ++s.visits;
-               s.neighbours.assign(neighbours.begin(), neighbours.end());
-               s.factors.assign(factors.begin(), factors.end());
-             });
-  for (long i = 0; i < long(x.size()); ++i) {
-    const Seen& s = seen[static_cast<std::size_t>(i)];
-    ASSERT_EQ(s.visits, 1) << "particle " << i;
-    const auto neighbours = list.neighbours(i);
-    const auto factors = list.gradient_factors(i);
-    EXPECT_EQ(s.neighbours, std::vector<int>(neighbours.begin(), neighbours.end())) << i;
-    EXPECT_EQ(s.factors, std::vector<double>(factors.begin(), factors.end())) << i;
-    EXPECT_EQ(s.neighbours.empty(), !wanted(i)) << i;
-  }
 }
 
 }  // namespace

@@ -196,27 +196,17 @@ class NeighbourList {
   // in its order. Exactly the neighbours a grid search finds while no particle
   // has moved more than half the list's skin since it was built.
   void build(const CandidateList& candidates, std::span<const Vec2> x, double h) {
-    build(candidates, x, h, [](long, std::span<const int>, std::span<const double>) {});
-  }
-  // The same, calling visit(i, neighbours, gradient_factors) for every
-  // particle as soon as its list is made (empty if it has no candidates), on
-  // the thread that made it: a pass over the particles run this way reads
-  // each list while it is still in cache.
-  template <class Visit>
-  void build(const CandidateList& candidates, std::span<const Vec2> x, double h, Visit&& visit) {
     const double support2 = (kernel::kSupport * h) * (kernel::kSupport * h);
     const kernel::GradientFactor gradient_factor(h);
     // About 21 neighbours at h = 1.3 dx: room for 32 avoids regrowth.
     lists_.fill(x.size(), 32, [&](long i, Store& store) {
       const auto c = candidates.candidates(i);
-      if (c.empty()) return visit(i, std::span<const int>(), std::span<const double>());
+      if (c.empty()) return;
       store.reserve(store.size + c.size());
       // F holds r^2 until the second loop, which vectorises.
       double* const F = store.value.data() + store.size;
       const std::size_t count = filter_within(c, x, x[i], support2, store.j.data() + store.size, F);
       for (std::size_t k = 0; k < count; ++k) F[k] = gradient_factor(std::sqrt(F[k]));
-      visit(i, std::span<const int>(store.j.data() + store.size, count),
-            std::span<const double>(F, count));
       store.size += count;
     });
   }
