@@ -212,7 +212,7 @@ TEST(FluidMomentum, NeighbourListsAreInIndexOrder) {
   }
 }
 
-TEST(FluidMomentum, GravityAloneAcceleratesAnIsolatedParticle) {
+TEST(FluidMomentum, AnIsolatedParticleFeelsGravityAloneAndIsSpray) {
   const FluidParameters p = water_parameters(0.01, Vec2(0.0, -9.81));
   FluidParticles P;
   P.add(0, Kind::water, Vec2(0.5, 0.5), 1000.0, 0.1);
@@ -222,6 +222,7 @@ TEST(FluidMomentum, GravityAloneAcceleratesAnIsolatedParticle) {
   compute_accelerations(P, n.pairs, p);
   EXPECT_EQ(P.a[0], Vec2(0.0, -9.81));
   EXPECT_EQ(P.drho[0], 0.0);
+  EXPECT_TRUE(P.spray[0]);  // nothing around it to renormalise with, no wall
 }
 
 }  // namespace
