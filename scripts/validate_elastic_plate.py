@@ -169,7 +169,7 @@ def main():
                      cr.spray_removed(series)])
         if suffix in SPEED_TARGETS:
             # What the run would take if the coupling cost nothing: the
-            # pace-setter's own work, the coupler's clock less its waits.
+            # coupler's clock less the pace-setter's waits for its answers.
             work = coupler_clock * (1.0 - exposed)
             targets.append(f"{label}: {wall:.0f} s against {SPEED_TARGETS[suffix]} s, of which the "
                            f"solver setting the pace spent {work:.0f} s on its own steps; the "
