@@ -56,19 +56,45 @@ def run_case(case, out_dir, settings=(), timeout=3600):
     return elapsed
 
 
-def logged_wall_time(out_dir):
-    """The wall time the launcher reported in OUT_DIR/launcher.log, in seconds,
-    or None: what a rerun of a script that reuses the run should show."""
+DURATION = r"(?:(\d+) h )?(?:(\d+) min )?([\d.]+)(?: (s|min))?"
+
+
+def seconds_of(match):
+    """Seconds of a DURATION the launcher wrote (its fmt_duration)."""
+    hours, minutes, last, unit = match
+    seconds = float(last) * (60 if unit == "min" else 1)
+    return 3600 * int(hours or 0) + 60 * int(minutes or 0) + seconds
+
+
+def launcher_summary(out_dir, pattern):
+    """The match of `pattern` in the launcher's summary in OUT_DIR/launcher.log, or None."""
     path = os.path.join(out_dir, "launcher.log")
     if not os.path.exists(path):
         return None
     for line in open(path):
-        match = re.match(r"cosph: finished in (?:(\d+) h )?(?:(\d+) min )?([\d.]+) (s|min) wall", line)
+        match = re.match(pattern, line)
         if match:
-            hours, minutes, last, unit = match.groups()
-            seconds = float(last) * (60 if unit == "min" else 1)
-            return 3600 * int(hours or 0) + 60 * int(minutes or 0) + seconds
+            return match
     return None
+
+
+def logged_wall_time(out_dir):
+    """The wall time the launcher reported in OUT_DIR/launcher.log, in seconds,
+    or None: what a rerun of a script that reuses the run should show."""
+    match = launcher_summary(out_dir, rf"cosph: finished in {DURATION} wall")
+    return seconds_of(match.groups()) if match else None
+
+
+def logged_cpu_times(out_dir):
+    """{process: CPU time in seconds} as the launcher reported them, or {}."""
+    match = launcher_summary(out_dir, r"cosph: CPU time: (.*)$")
+    if not match:
+        return {}
+    times = {}
+    for part in match.group(1).split(", "):
+        name, duration = part.split(" ", 1)
+        times[name] = seconds_of(re.fullmatch(DURATION, duration).groups())
+    return times
 
 
 def rms_relative_error(t_model, y_model, t_ref, y_ref):

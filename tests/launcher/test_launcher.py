@@ -12,6 +12,7 @@ record their pids and arguments in FAKE_DIR.
 import json
 import os
 import pty
+import re
 import shutil
 import signal
 import subprocess
@@ -164,6 +165,17 @@ class LauncherTest(unittest.TestCase):
         self.assertEqual(json.loads((self.state / "plan.args").read_text())[2:],
                          ["--set", "a=1", "--set", "b.c=x y"])
         self.assert_all_gone(3)
+
+    def test_summary_gives_each_process_its_cpu_time(self):
+        # The solid computes for 10 x 0.05 s; the others sleep as long.
+        rc, out, err = self.run_case(FAKE_PLAN=THREE, FAKE_BUSY="cosph-solid")
+        self.assertEqual(rc, 0, err)
+        match = re.search(r"cosph: CPU time: coupler ([\d.]+) s, fluid ([\d.]+) s, "
+                          r"solid ([\d.]+) s", out)
+        self.assertIsNotNone(match, out)
+        coupler, fluid, solid = map(float, match.groups())
+        self.assertGreaterEqual(solid, 0.45)
+        self.assertLess(max(coupler, fluid), solid - 0.3)
 
     def test_spinning_openmp_threads_are_warned_of_when_processes_share_cores(self):
         warning = "cosph: warning: OMP_WAIT_POLICY=active: 3 processes share"

@@ -7,6 +7,7 @@ Steered by environment variables (NAME lists are comma-separated exe names):
   FAKE_STEPS        progress lines before a normal exit (default 10)
   FAKE_INTERVAL     seconds between progress lines (default 0.05)
   FAKE_HANG         NAMEs that never finish on their own
+  FAKE_BUSY         NAMEs that spend FAKE_INTERVAL computing, not sleeping
   FAKE_FAIL         NAMEs that fail after FAKE_FAIL_AFTER seconds (default 0.3)
                     with exit code FAKE_FAIL_CODE (default 3), or, if
                     FAKE_FAIL_SIGNAL is set, by killing themselves with it
@@ -67,12 +68,18 @@ def main(name):
     steps = int(os.environ.get("FAKE_STEPS", "10"))
     interval = float(os.environ.get("FAKE_INTERVAL", "0.05"))
     hang = name in _names("FAKE_HANG")
+    busy = name in _names("FAKE_BUSY")
     fail = name in _names("FAKE_FAIL")
     fail_after = float(os.environ.get("FAKE_FAIL_AFTER", "0.3"))
     start = time.monotonic()
     step = 0
     while hang or step < steps:
-        time.sleep(interval)
+        if busy:
+            until = time.monotonic() + interval
+            while time.monotonic() < until:
+                pass
+        else:
+            time.sleep(interval)
         if interrupted:
             if state:
                 _write(os.path.join(state, name + ".sigint"), "1")
