@@ -7,7 +7,7 @@ Steered by environment variables (NAME lists are comma-separated exe names):
   FAKE_STEPS        progress lines before a normal exit (default 10)
   FAKE_INTERVAL     seconds between progress lines (default 0.05)
   FAKE_HANG         NAMEs that never finish on their own
-  FAKE_BUSY         NAMEs that spend FAKE_INTERVAL computing, not sleeping
+  FAKE_BUSY         NAMEs that spend FAKE_INTERVAL of CPU time computing, not sleeping
   FAKE_FAIL         NAMEs that fail after FAKE_FAIL_AFTER seconds (default 0.3)
                     with exit code FAKE_FAIL_CODE (default 3), or, if
                     FAKE_FAIL_SIGNAL is set, by killing themselves with it
@@ -74,9 +74,9 @@ def main(name):
     start = time.monotonic()
     step = 0
     while hang or step < steps:
-        if busy:
-            until = time.monotonic() + interval
-            while time.monotonic() < until:
+        if busy:   # CPU time, not wall time: a loaded machine must not shorten it
+            until = time.process_time() + interval
+            while time.process_time() < until:
                 pass
         else:
             time.sleep(interval)
