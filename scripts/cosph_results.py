@@ -59,9 +59,10 @@ def run_case(case, out_dir, settings=(), timeout=3600):
 DURATION = r"(?:(\d+) h )?(?:(\d+) min )?([\d.]+)(?: (s|min))?"
 
 
-def seconds_of(match):
-    """Seconds of a DURATION the launcher wrote (its fmt_duration)."""
-    hours, minutes, last, unit = match
+def seconds_of(groups):
+    """Seconds of a DURATION the launcher wrote (its fmt_duration), from the
+    regular expression's groups."""
+    hours, minutes, last, unit = groups
     seconds = float(last) * (60 if unit == "min" else 1)
     return 3600 * int(hours or 0) + 60 * int(minutes or 0) + seconds
 

@@ -131,7 +131,7 @@ def cpu_budget(cpu_times, target_s, cores=2):
         return "CPU time not recorded"
     total = sum(cpu_times.values())
     parts = ", ".join(f"{name} {seconds:.0f} s" for name, seconds in cpu_times.items())
-    return (f"the three processes used {total:.0f} s of CPU time ({parts}) against the "
+    return (f"its processes used {total:.0f} s of CPU time ({parts}) against the "
             f"{cores * target_s} s that {cores} cores give in {target_s} s")
 
 
