@@ -101,9 +101,7 @@ void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
     const auto c = candidates.candidates(i);
     return c.empty() ? i : c.back();
   });
-  const bool threaded = sph::on_team(use_team);
-#pragma omp parallel for schedule(static) if (threaded)
-  for (long b = 0; b < blocks; ++b) {
+  sph::parallel_for(blocks, use_team, [&](long b) {
     thread_local PairsWithin pairs;
     for (long i = shares.begin(b); i < shares.end(b); ++i) P.rate_sums[i] = RateSums{};
     for (long i = shares.begin(b); i < shares.end(b); ++i) {
@@ -137,8 +135,8 @@ void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
       }
       P.rate_sums[i] += own;
     }
-  }
-  shares.merge(P.rate_sums, threaded);
+  });
+  shares.merge(P.rate_sums, use_team);
 
   sph::parallel_for(P.size(), use_team, [&](long i) {
     if (P.inert[i]) {
@@ -182,9 +180,7 @@ void compute_accelerations(SolidParticles& P, const SolidParameters& par) {
     const std::vector<Neighbour>& neighbours = P.neighbours[i];
     return neighbours.empty() ? i : neighbours.back().j;
   });
-  const bool threaded = sph::on_team(use_team);
-#pragma omp parallel for schedule(static) if (threaded)
-  for (long b = 0; b < blocks; ++b) {
+  sph::parallel_for(blocks, use_team, [&](long b) {
     for (long i = shares.begin(b); i < shares.end(b); ++i) P.a[i].setZero();
     for (long i = shares.begin(b); i < shares.end(b); ++i) {
       const std::vector<Neighbour>& neighbours = P.neighbours[i];
@@ -229,8 +225,8 @@ void compute_accelerations(SolidParticles& P, const SolidParameters& par) {
       }
       P.a[i] += a_i;
     }
-  }
-  shares.merge(P.a, threaded);
+  });
+  shares.merge(P.a, use_team);
   // The coupling's external_a is added by the kicks.
   sph::parallel_for(P.size(), use_team, [&](long i) {
     P.a[i] = P.clamped[i] ? Vec2::Zero() : Vec2(P.a[i] + par.run.gravity);

@@ -43,14 +43,13 @@ class OrderedShares {
     end_.resize(blocks);
     reach_end_.resize(blocks);
     base_.resize(blocks);
-#pragma omp parallel for schedule(static) if (on_team(use_team))
-    for (long b = 0; b < blocks; ++b) {
+    parallel_for(blocks, use_team, [&](long b) {
       end_[b] = std::min(n, (b + 1) * block_);
       long reach_end = end_[b];
       for (long i = begin(b); i < end_[b]; ++i)
         reach_end = std::max(reach_end, last_neighbour(i) + 1);
       reach_end_[b] = reach_end;
-    }
+    });
     long size = 0;
     for (long b = 0; b < blocks; ++b) {
       base_[b] = size - end_[b];
@@ -60,12 +59,8 @@ class OrderedShares {
     return blocks;
   }
 
-  long begin(long block) const {
-    return block * block_;
-  }
-  long end(long block) const {
-    return end_[block];
-  }
+  long begin(long block) const { return block * block_; }
+  long end(long block) const { return end_[block]; }
 
   // Where block `block` sends the share of particle j (j > the visited i).
   T& share(long block, T* sums, long j) {
@@ -75,13 +70,14 @@ class OrderedShares {
   // Adds the spill buffers to the sums of the later blocks, in block order.
   void merge(std::span<T> sums, bool use_team) const {
     const long blocks = static_cast<long>(end_.size());
-#pragma omp parallel for schedule(static) if (on_team(use_team))
-    for (long b = 1; b < blocks; ++b)
+    // Block 0 receives nothing: its loop is empty.
+    parallel_for(blocks, use_team, [&](long b) {
       for (long from = 0; from < b; ++from) {
         const long last = std::min(end_[b], reach_end_[from]);
         for (long j = begin(b); j < last; ++j)
           sums[j] += spill_[static_cast<std::size_t>(base_[from] + j)];
       }
+    });
   }
 
  private:
