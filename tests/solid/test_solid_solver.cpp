@@ -145,6 +145,30 @@ TEST(SolidSolver, ResultDoesNotDependOnTheThreadCount) {
                           [](const Vec2& v) { return v.norm() > 0.1; }));  // it swings
 }
 
+// The usual exponent of the artificial stress, n = 4, has a pass of its own
+// (f^4 by two products): it agrees with the general one (std::pow) at an
+// exponent next to 4, and another exponent changes the forces.
+TEST(SolidDynamics, ArtificialStressExponentFourAgreesWithThePowerLaw) {
+  const auto accelerations = [](const std::string& exponent) {
+    const sph::CaseFile case_file = sph::load_case(
+        plate_case_path(), {"solid.spacing=0.002", "solid.artificial_stress.exponent=" + exponent});
+    SolidSolver solver(case_file, read_solid_parameters(case_file));
+    for (int step = 0; step < 50; ++step) solver.step(solver.step_limits().smallest());
+    return solver.particles().a;
+  };
+  const auto largest_difference = [](const std::vector<Vec2>& a, const std::vector<Vec2>& b) {
+    double largest = 0.0, scale = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      largest = std::max(largest, (a[i] - b[i]).norm());
+      scale = std::max(scale, a[i].norm());
+    }
+    return largest / scale;
+  };
+  const std::vector<Vec2> fourth = accelerations("4");
+  EXPECT_LT(largest_difference(fourth, accelerations("4.000000001")), 1e-8);
+  EXPECT_GT(largest_difference(fourth, accelerations("2")), 1e-3);
+}
+
 // A block 40 mm above a clamped one, beyond the kernel's reach; the clamped
 // block's lower rows are out of every free particle's reach (inert).
 const char* kBlockAboveClampedBlock = R"(
