@@ -124,19 +124,19 @@ def coupling_cost(out):
             float(exposed / max(total, 1e-30)), imbalance)
 
 
-def cpu_budget(cpu_times, polling_s, target_s, cores=2):
+def cpu_budget(cpu_times, waits_s, target_s, cores=2):
     """The run's CPU time, less what the pace-setter may have spent polling
     for its answers, against what the cores give in the target's time: above
     it, the target needs less work, not better overlap.
 
     The pace-setter polls for up to 0.3 ms of each wait before it sleeps
     (participant.cpp), and polling counts as CPU time: at most its waits,
-    polling_s, which better overlap could give back."""
+    waits_s, which better overlap could give back."""
     if not cpu_times:
         return "CPU time not recorded"
     total = sum(cpu_times.values())
     parts = ", ".join(f"{name} {seconds:.1f} s" for name, seconds in cpu_times.items())
-    working = total - polling_s
+    working = total - waits_s
     verdict = "above" if working > cores * target_s else "within"
     return (f"its processes used {total:.1f} s of CPU time ({parts}), {working:.1f} s if the "
             f"pace-setter's waits for its answers, in which it polls, cost none: {verdict} the "
@@ -189,12 +189,12 @@ def main():
         if suffix in SPEED_TARGETS:
             # What the run would take if the coupling cost nothing: the
             # coupler's clock less the pace-setter's waits for its answers.
-            work = coupler_clock * (1.0 - exposed)
+            waits = coupler_clock * exposed
+            work = coupler_clock - waits
             target = SPEED_TARGETS[suffix]
             targets.append(f"{label}: {wall:.1f} s against {target} s, of which the "
                            f"solver setting the pace spent {work:.1f} s on its own steps; "
-                           + cpu_budget(cr.logged_cpu_times(out), coupler_clock * exposed,
-                                        target) + "; the "
+                           + cpu_budget(cr.logged_cpu_times(out), waits, target) + "; the "
                            f"coupling's share of the step {100 * exposed:.0f} % against at most "
                            f"15 % (the coupler's own share {100 * share:.0f} %)")
         if reached < 0.399:

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "sphcore/interface_particles.hpp"
+#include "sphcore/parallel.hpp"
 #include "sphcore/runaway_error.hpp"
 #include "sphcore/types.hpp"
 
@@ -46,19 +47,6 @@ std::optional<WallCrossing> find_wall_crossing(const Positions& x, const Clamped
   return std::nullopt;
 }
 
-// Whether some free particle lies inside `box`. Every particle is tested, with
-// no early exit, so that the test vectorises: it runs every step, and a
-// crossing stops the run.
-template <class Positions, class Clamped>
-bool some_free_particle_inside(const Positions& x, const Clamped& clamped, const sph::Region& box) {
-  long any = 0;  // a bool here does not vectorise (as in sph::parallel_any)
-  for (std::size_t i = 0; i < x.size(); ++i)
-    any |= static_cast<long>(!clamped[i]) & static_cast<long>(x[i].x() >= box.min.x()) &
-           static_cast<long>(x[i].x() <= box.max.x()) & static_cast<long>(x[i].y() >= box.min.y()) &
-           static_cast<long>(x[i].y() <= box.max.y());
-  return any != 0;
-}
-
 // `walls` without those some free particle lies inside now.
 template <class Positions, class Clamped>
 std::vector<UnmetWall> walls_no_free_particle_is_inside(const Positions& x, const Clamped& clamped,
@@ -76,8 +64,12 @@ std::vector<UnmetWall> walls_no_free_particle_is_inside(const Positions& x, cons
 template <class Particles>
 void stop_if_in_unmet_wall(const Particles& P, const std::vector<UnmetWall>& walls, double time,
                            long steps) {
+  // A screen of all particles, which vectorises, before the search that
+  // stops at the first: it runs every step, and a crossing ends the run.
   if (std::none_of(walls.begin(), walls.end(), [&P](const UnmetWall& wall) {
-        return some_free_particle_inside(P.x, P.clamped, wall.inside);
+        return sph::parallel_any(P.size(), sph::kTeamAtAnySize, [&](long i) {
+          return !P.clamped[i] & wall.inside.contains(P.x[i]);
+        });
       }))
     return;
   const auto crossing = find_wall_crossing(P.x, P.clamped, walls);

@@ -22,8 +22,10 @@ struct Region {
     return {Vec2(-inf, -inf), Vec2(inf, inf)};
   }
   bool empty() const { return !(min.x() <= max.x() && min.y() <= max.y()); }
+  // Without a branch (& of the four tests, not &&), so that a screen over
+  // all particles (sph::parallel_any) vectorises.
   bool contains(const Vec2& p) const {
-    return p.x() >= min.x() && p.x() <= max.x() && p.y() >= min.y() && p.y() <= max.y();
+    return (p.x() >= min.x()) & (p.x() <= max.x()) & (p.y() >= min.y()) & (p.y() <= max.y());
   }
   void include(const Vec2& p) {
     min = min.cwiseMin(p);
