@@ -4,7 +4,6 @@
 #include <cmath>
 #include <optional>
 #include <span>
-#include <type_traits>
 #include <vector>
 
 #include "artificial_stress.hpp"
@@ -66,6 +65,81 @@ std::optional<Mat2> fitted_gradient(const SolidParticles& P, long i, const Pairs
   }
   return grad_v.matrix();
 }
+
+// What the momentum bracket takes from particle i, read once for all its pairs.
+struct PairSide {
+  PairSide(const SolidParticles& P, long i)
+      : x(P.x[i]),
+        v(P.v[i]),
+        m(P.m[i]),
+        rho(P.rho[i]),
+        c(P.c[i]),
+        inverse_rho(P.inverse_rho[i]),
+        sigma_L(P.sigma_L[i]),
+        R(P.R[i]) {}
+  Vec2 x, v;
+  double m, rho, c, inverse_rho;
+  const Mat2 &sigma_L, &R;
+};
+
+enum class ArtificialStressTerm { none, fourth_power, any_power };
+
+// The momentum pair term of SPEC.md with sigma L for sigma (solid_dynamics.hpp),
+// its bracket times grad_i W_ij,
+//   ( (sigma_i L_i + sigma_j L_j) / (rho_i rho_j) - Pi_ij I + f_ij^n (R_i + R_j) ) . grad_i W_ij:
+// j's contribution to dv_i/dt is m_j times it, i's to dv_j/dt -m_i times it.
+// The artificial stress's term is a template argument: its flags, tested in
+// every pair, cost 2 % of the solid's step (the commit that made it so gives the runs).
+template <ArtificialStressTerm kArtificialStress>
+class MomentumBracket {
+ public:
+  MomentumBracket(const SolidParticles& P, const SolidParameters& par)
+      : P_(P),
+        h_(par.h),
+        A_(par.A),
+        B_(par.B),
+        n_(par.artificial_stress.exponent),
+        inverse_W_dx_(1.0 / kernel::W(par.dx, par.h)) {}
+
+  Vec2 operator()(const PairSide& i, const Neighbour& neighbour) const {
+    const int j = neighbour.j;
+    const Vec2 x_ij = i.x - P_.x[j];
+    const double Pi_ij = sph::artificial_viscosity(x_ij, i.v - P_.v[j], h_, 0.5 * (i.c + P_.c[j]),
+                                                   0.5 * (i.rho + P_.rho[j]), A_, B_);
+    // By components: as a 2x2 expression Eigen kept the bracket on the
+    // stack and read it back, and the pass ran no faster for halving its pairs.
+    const Mat2& sigma_L_j = P_.sigma_L[j];
+    const double inverse_rho_i_rho_j = i.inverse_rho * P_.inverse_rho[j];
+    double b_xx = (i.sigma_L(0, 0) + sigma_L_j(0, 0)) * inverse_rho_i_rho_j - Pi_ij;
+    double b_xy = (i.sigma_L(0, 1) + sigma_L_j(0, 1)) * inverse_rho_i_rho_j;
+    double b_yx = (i.sigma_L(1, 0) + sigma_L_j(1, 0)) * inverse_rho_i_rho_j;
+    double b_yy = (i.sigma_L(1, 1) + sigma_L_j(1, 1)) * inverse_rho_i_rho_j - Pi_ij;
+    if constexpr (kArtificialStress != ArtificialStressTerm::none) {
+      const Mat2& R_j = P_.R[j];
+      const double f_n = f_to_the_n(neighbour.W_ij * inverse_W_dx_);
+      b_xx += f_n * (i.R(0, 0) + R_j(0, 0));
+      b_xy += f_n * (i.R(0, 1) + R_j(0, 1));
+      b_yx += f_n * (i.R(1, 0) + R_j(1, 0));
+      b_yy += f_n * (i.R(1, 1) + R_j(1, 1));
+    }
+    const Vec2& g = neighbour.grad_W_ij;
+    return Vec2(b_xx * g.x() + b_xy * g.y(), b_yx * g.x() + b_yy * g.y());
+  }
+
+ private:
+  // f_ij^n, f_ij = W(r_ij) / W(dx).
+  double f_to_the_n(double f) const {
+    if constexpr (kArtificialStress == ArtificialStressTerm::fourth_power) {
+      const double f2 = f * f;
+      return f2 * f2;
+    } else {
+      return std::pow(f, n_);
+    }
+  }
+
+  const SolidParticles& P_;
+  double h_, A_, B_, n_, inverse_W_dx_;
+};
 
 }  // namespace
 
@@ -153,87 +227,44 @@ void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
 
 void compute_accelerations(SolidParticles& P, const SolidParameters& par) {
   const long n = static_cast<long>(P.size());
-  const double h = par.h;
-  const double n_exponent = par.artificial_stress.exponent;
-  const double inverse_W_dx = 1.0 / kernel::W(par.dx, h);
   const bool use_team = sph::kTeamAtAnySize;
   P.inverse_rho.resize(P.size());
   sph::parallel_for(P.size(), use_team, [&](long i) { P.inverse_rho[i] = 1.0 / P.rho[i]; });
 
   // Each pair is worked out once, by the lower index, which lists it (the
   // rates pass), and which gives the higher one its share (sph::OrderedShares,
-  // as the fluid's momentum pass): the bracket below is symmetric in i and j,
-  // and grad_j W_ji = -grad_i W_ij. The pairs of an inert particle act on
+  // as the fluid's momentum pass): the bracket is symmetric in i and j, and
+  // grad_j W_ji = -grad_i W_ij. The pairs of an inert particle act on
   // clamped particles only, whose accelerations are zero: none is listed.
   sph::OrderedShares<Vec2>& shares = P.a_shares;
   const long blocks = shares.prepare(n, use_team, [&](long i) -> long {
     const std::vector<Neighbour>& neighbours = P.neighbours[i];
     return neighbours.empty() ? i : neighbours.back().j;
   });
-  // The artificial stress's settings, fixed for the whole pass, are compile-
-  // time constants of it (std::bool_constant) rather than flags tested in
-  // every pair: 2 % of the solid's step (the commit gives the runs).
-  const auto pass = [&](auto with_artificial_stress, auto fourth_power) {
+  const auto pass = [&]<class Bracket>(const Bracket& bracket) {
     sph::parallel_for(blocks, use_team, [&](long b) {
       for (long i = shares.begin(b); i < shares.end(b); ++i) P.a[i].setZero();
       for (long i = shares.begin(b); i < shares.end(b); ++i) {
-        const std::vector<Neighbour>& neighbours = P.neighbours[i];
-        if (neighbours.empty()) continue;
-        const Vec2 x_i = P.x[i], v_i = P.v[i];
-        const double m_i = P.m[i], rho_i = P.rho[i], c_i = P.c[i];
-        const double inverse_rho_i = P.inverse_rho[i];
-        const Mat2 &sigma_L_i = P.sigma_L[i], &R_i = P.R[i];
-        // The pair's bracket times grad_i W_ij,
-        //   ( (sigma_i L_i + sigma_j L_j) / (rho_i rho_j) - Pi_ij I
-        //     + f_ij^n (R_i + R_j) ) . grad_i W_ij:
-        // j's contribution to dv_i/dt is m_j times it, i's to dv_j/dt -m_i times it.
-        const auto bracket_times_gradient = [&](const Neighbour& neighbour) -> Vec2 {
-          const int j = neighbour.j;
-          const Vec2 x_ij = x_i - P.x[j];
-          const double Pi_ij = sph::artificial_viscosity(
-              x_ij, v_i - P.v[j], h, 0.5 * (c_i + P.c[j]), 0.5 * (rho_i + P.rho[j]), par.A, par.B);
-          // By components: as a 2x2 expression Eigen kept the bracket on the
-          // stack and read it back, and the pass ran no faster for halving its pairs.
-          const Mat2& sigma_L_j = P.sigma_L[j];
-          const double inverse_rho_i_rho_j = inverse_rho_i * P.inverse_rho[j];
-          double b_xx = (sigma_L_i(0, 0) + sigma_L_j(0, 0)) * inverse_rho_i_rho_j - Pi_ij;
-          double b_xy = (sigma_L_i(0, 1) + sigma_L_j(0, 1)) * inverse_rho_i_rho_j;
-          double b_yx = (sigma_L_i(1, 0) + sigma_L_j(1, 0)) * inverse_rho_i_rho_j;
-          double b_yy = (sigma_L_i(1, 1) + sigma_L_j(1, 1)) * inverse_rho_i_rho_j - Pi_ij;
-          if constexpr (decltype(with_artificial_stress)::value) {
-            const Mat2& R_j = P.R[j];
-            const double f = neighbour.W_ij * inverse_W_dx;
-            double f_n;
-            if constexpr (decltype(fourth_power)::value) {
-              const double f2 = f * f;
-              f_n = f2 * f2;
-            } else {
-              f_n = std::pow(f, n_exponent);
-            }
-            b_xx += f_n * (R_i(0, 0) + R_j(0, 0));
-            b_xy += f_n * (R_i(0, 1) + R_j(0, 1));
-            b_yx += f_n * (R_i(1, 0) + R_j(1, 0));
-            b_yy += f_n * (R_i(1, 1) + R_j(1, 1));
-          }
-          const Vec2& g = neighbour.grad_W_ij;
-          return Vec2(b_xx * g.x() + b_xy * g.y(), b_yx * g.x() + b_yy * g.y());
-        };
+        if (P.neighbours[i].empty()) continue;
+        const PairSide side_i(P, i);
         Vec2 a_i = Vec2::Zero();
-        for (const Neighbour& neighbour : neighbours) {
-          const Vec2 bracket_times_gradient_ij = bracket_times_gradient(neighbour);
+        for (const Neighbour& neighbour : P.neighbours[i]) {
+          const Vec2 bracket_times_gradient_ij = bracket(side_i, neighbour);
           a_i += P.m[neighbour.j] * bracket_times_gradient_ij;
-          shares.share(b, P.a.data(), neighbour.j) -= m_i * bracket_times_gradient_ij;
+          shares.share(b, P.a.data(), neighbour.j) -= side_i.m * bracket_times_gradient_ij;
         }
         P.a[i] += a_i;
       }
     });
   };
-  if (!par.artificial_stress.enabled)
-    pass(std::false_type{}, std::false_type{});
-  else if (n_exponent == 4.0)  // the usual exponent: f^4 by two products, not std::pow
-    pass(std::true_type{}, std::true_type{});
+  // The artificial stress's settings are fixed for the whole pass.
+  const ArtificialStressParameters& stress = par.artificial_stress;
+  if (!stress.enabled)
+    pass(MomentumBracket<ArtificialStressTerm::none>(P, par));
+  else if (stress.exponent == 4.0)  // the usual exponent: f^4 by two products, not std::pow
+    pass(MomentumBracket<ArtificialStressTerm::fourth_power>(P, par));
   else
-    pass(std::true_type{}, std::false_type{});
+    pass(MomentumBracket<ArtificialStressTerm::any_power>(P, par));
   shares.merge(P.a, use_team);
   // The coupling's external_a is added by the kicks.
   sph::parallel_for(P.size(), use_team, [&](long i) {
