@@ -6,7 +6,6 @@
 #include <span>
 #include <vector>
 
-#include "artificial_stress.hpp"
 #include "jaumann_rate.hpp"
 #include "momentum_bracket.hpp"
 #include "sphcore/kernel.hpp"
