@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "solid_gauges.hpp"
+#include "solid_interface.hpp"
 #include "solid_parameters.hpp"
 #include "solid_particles.hpp"
 #include "sphcore/case_file.hpp"
@@ -83,7 +84,7 @@ class SolidSolver {
   // (a cheap screen, sph::screen); true when one may fail them.
   bool may_have_run_away() const;
 
-  std::vector<long> interface_index_;  // particle indices of the last collect_interface
+  SolidInterface interface_;  // the particles of the last collect_interface
   SolidParameters parameters_;
   SolidParticles particles_;
   std::vector<int> tip_ids_;

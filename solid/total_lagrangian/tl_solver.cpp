@@ -78,18 +78,11 @@ void TLSolver::end_step(double dt) {
 }
 
 void TLSolver::collect_interface(const sph::Region& region, sph::InterfaceParticles& out) {
-  const TLParticles& P = particles_;
-  out.clear();
-  interface_index_.clear();
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    if (!region.contains(P.x[i])) continue;
-    interface_index_.push_back(static_cast<long>(i));
-    out.add(P.id[i], P.x[i], P.v[i], P.sigma[i], P.m[i], P.rho[i], parameters_.h, P.c[i]);
-  }
+  interface_.collect(particles_, parameters_.h, region, out);
 }
 
 void TLSolver::set_interface_accelerations(const std::vector<Vec2>& accelerations) {
-  sph::scatter_interface_accelerations(interface_index_, accelerations, particles_.external_a);
+  interface_.scatter(accelerations, particles_.external_a);
 }
 
 sph::Region TLSolver::interaction_bounds() const {

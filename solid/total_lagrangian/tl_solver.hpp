@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "solid_gauges.hpp"
+#include "solid_interface.hpp"
 #include "solid_parameters.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/interface_particles.hpp"
@@ -70,7 +71,7 @@ class TLSolver {
   // (a cheap screen, sph::screen); true when one may fail them.
   bool may_have_run_away() const;
 
-  std::vector<long> interface_index_;  // particle indices of the last collect_interface
+  SolidInterface interface_;  // the particles of the last collect_interface
   SolidParameters parameters_;
   ForceParameters forces_;
   TLParticles particles_;
