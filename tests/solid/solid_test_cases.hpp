@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "sphcore/runaway_error.hpp"
 
@@ -83,6 +85,28 @@ double lowest_y(const Particles& particles, double floor = -1.0) {
   for (const auto& x : particles.x)
     if (x.y() > floor) lowest = std::min(lowest, x.y());
   return lowest;
+}
+
+// The free end's period, from the zero crossings of its y displacement after
+// t = 0.01 s (the start-up transient), stepping the solver to `end_time`:
+// twice the mean time between crossings. Throws if it crossed fewer than
+// twice.
+template <class Solver>
+double tip_period_until(Solver& solver, double end_time) {
+  std::vector<double> crossings;
+  double previous_t = 0.0, previous_y = 0.0;
+  while (solver.time() < end_time) {
+    solver.step(solver.step_limits().smallest());
+    const double y = solver.gauges().tip_dy, t = solver.time();
+    if (previous_t > 0.01 && (y > 0.0) != (previous_y > 0.0))
+      crossings.push_back(previous_t + (t - previous_t) * previous_y / (previous_y - y));
+    previous_t = t;
+    previous_y = y;
+  }
+  if (crossings.size() < 2)
+    throw std::runtime_error("the free end crossed zero " + std::to_string(crossings.size()) +
+                             " times, too few for a period");
+  return 2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
 }
 
 // The oscillating plate of cases/oscillating_plate.pbtxt.

@@ -111,19 +111,7 @@ TEST(OscillatingPlate, CoarsePeriodNearThinPlateTheory) {
       sph::load_case(plate_case_path(), {"solid.spacing=0.0033333333333333", "run.end_time=0.3"});
   const SolidParameters par = read_solid_parameters(case_file);
   SolidSolver solver(case_file, par);
-  std::vector<double> crossings;
-  double previous_t = 0.0, previous_y = 0.0;
-  while (solver.time() < par.run.end_time) {
-    solver.step(solver.step_limits().smallest());
-    const double y = solver.gauges().tip_dy, t = solver.time();
-    if (previous_t > 0.01 && (y > 0.0) != (previous_y > 0.0))
-      crossings.push_back(previous_t + (t - previous_t) * previous_y / (previous_y - y));
-    previous_t = t;
-    previous_y = y;
-  }
-  ASSERT_GE(crossings.size(), 2u);
-  const double T =
-      2.0 * (crossings.back() - crossings.front()) / static_cast<double>(crossings.size() - 1);
+  const double T = testing::tip_period_until(solver, par.run.end_time);
   const double T_theory =
       2.0 * M_PI / cantilever_angular_frequency(par.E, par.nu, par.rho0, 0.02, 0.2);
   EXPECT_NEAR(T / T_theory, 1.0, kCoarsePeriodTolerance) << "T = " << T << " s";
