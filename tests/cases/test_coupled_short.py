@@ -6,37 +6,23 @@ Regenerate the reference after a deliberate physics change with
 COSPH_UPDATE_REFERENCE=1 (and say why in the commit)."""
 import os
 import shutil
-import subprocess
 import tempfile
 import unittest
 
 import numpy as np
 
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from case_runs import REPO, read_csv, run_case
+
 REFERENCE = os.path.join(REPO, "tests", "reference", "elastic_plate_short.csv")
 END_TIME = 0.004  # s: about 1900 common steps, a few seconds
-
-
-def read_csv(path):
-    with open(path) as f:
-        names = [n.split(" [")[0] for n in f.readline().strip().split(",")]
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    return {name: data[:, k] for k, name in enumerate(names)}
 
 
 class ElasticPlateShort(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.out = tempfile.mkdtemp(prefix="cosph_plate_")
-        result = subprocess.run(
-            [os.path.join(REPO, "coupler", "cosph"), "run", "elastic_plate", "--out", cls.out,
-             "--quiet", "--set", f"run.end_time={END_TIME}", "--set", "run.output_interval=0.0005",
-             # ctest runs other process-heavy tests beside this one: a peer
-             # starved of the cores for 10 s is not what this test is about.
-             "--set", "coupling.timeout=60"],
-            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-            # A few seconds in a release build; sanitizer builds are tens of times slower.
-            timeout=float(os.environ.get("COSPH_CASE_TIMEOUT", "1500")))
+        result = run_case("elastic_plate", cls.out,
+                          [f"run.end_time={END_TIME}", "run.output_interval=0.0005"])
         cls.log = result.stdout
         cls.returncode = result.returncode
 

@@ -10,37 +10,24 @@ Run by ctest; by hand: COSPH_BIN=build/bin /usr/bin/python3 -m unittest discover
 import glob
 import os
 import shutil
-import subprocess
 import tempfile
 import unittest
 
 import h5py
 import numpy as np
 
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from case_runs import read_csv, run_case
+
 END_TIME = 0.04  # s
-SHORT_MODE = ["--set", f"run.end_time={END_TIME}", "--set", "run.snapshot_interval=0.01",
-              "--set", "coupling.max_substeps=32", "--set", "coupling.timeout=60",
-              "--set", "solid.fracture.weakened[0].yield_stress=4000"]
-
-
-def read_csv(path):
-    with open(path) as f:
-        names = [n.split(" [")[0] for n in f.readline().strip().split(",")]
-    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
-    return {name: data[:, k] for k, name in enumerate(names)}
+SHORT_MODE = [f"run.end_time={END_TIME}", "run.snapshot_interval=0.01",
+              "coupling.max_substeps=32", "solid.fracture.weakened[0].yield_stress=4000"]
 
 
 class PlateFractureShort(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
         cls.out = tempfile.mkdtemp(prefix="cosph_fracture_")
-        result = subprocess.run(
-            [os.path.join(REPO, "coupler", "cosph"), "run", "plate_fracture", "--out", cls.out,
-             "--quiet"] + SHORT_MODE,
-            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-            # About 20 s in a release build on two busy cores; sanitizer builds are slower.
-            timeout=float(os.environ.get("COSPH_CASE_TIMEOUT", "1500")))
+        result = run_case("plate_fracture", cls.out, SHORT_MODE)
         cls.log = result.stdout
         cls.returncode = result.returncode
 
@@ -62,7 +49,6 @@ class PlateFractureShort(unittest.TestCase):
         self.assertGreater(series["broken_x"][-1], series["broken_x"][0])
         last = self.snapshots("solid")[-1]
         with h5py.File(last) as f:
-            y = f["position"][:, 1]
             failed = f["failed"][:] == 1
             ids = f["id"][:]
         with h5py.File(self.snapshots("solid")[0]) as f:

@@ -7,20 +7,14 @@ Run by ctest; by hand: COSPH_BIN=build/bin /usr/bin/python3 -m unittest discover
 import glob
 import os
 import shutil
-import subprocess
 import tempfile
 import unittest
 
-REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+from case_runs import run_case
 
 
 def run_plate(out, *settings):
-    command = [os.path.join(REPO, "coupler", "cosph"), "run", "elastic_plate", "--out", out,
-               "--quiet", "--set", "run.end_time=0.01", "--set", "coupling.timeout=60"]
-    for setting in settings:
-        command += ["--set", setting]
-    return subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                          timeout=float(os.environ.get("COSPH_CASE_TIMEOUT", "1500")))
+    return run_case("elastic_plate", out, ["run.end_time=0.01", *settings])
 
 
 class SolidAtFluidStep(unittest.TestCase):

@@ -1,0 +1,30 @@
+"""What the coupled-case tests share: a case run through the launcher
+(coupler/cosph, three processes), and its CSV output read by column name."""
+import os
+import subprocess
+
+import numpy as np
+
+REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+def run_case(case, out, settings):
+    """Runs cases/CASE.pbtxt into OUT with each FIELD=VALUE of SETTINGS;
+    returns the finished process, its output and errors together in stdout."""
+    command = [os.path.join(REPO, "coupler", "cosph"), "run", case, "--out", out, "--quiet",
+               # ctest runs other process-heavy tests beside these: a peer
+               # starved of the cores for 10 s is not what they are about.
+               "--set", "coupling.timeout=60"]
+    for setting in settings:
+        command += ["--set", setting]
+    return subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                          # Seconds in a release build; sanitizer builds are tens of times slower.
+                          timeout=float(os.environ.get("COSPH_CASE_TIMEOUT", "1500")))
+
+
+def read_csv(path):
+    """The columns of a cosph CSV file by name, units dropped: "t [s]" is "t"."""
+    with open(path) as f:
+        names = [n.split(" [")[0] for n in f.readline().strip().split(",")]
+    data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
+    return {name: data[:, k] for k, name in enumerate(names)}
