@@ -1,12 +1,12 @@
 #include "solid_solver.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <sstream>
 
 #include "artificial_stress.hpp"
 #include "hooke_pressure.hpp"
+#include "kick_drift_kick.hpp"
 #include "solid_dynamics.hpp"
 #include "solid_scene.hpp"
 #include "sphcore/kernel.hpp"
@@ -16,7 +16,6 @@
 #include "sphcore/runaway_screen.hpp"
 #include "unmet_walls.hpp"
 #include "von_mises_failure.hpp"
-#include "wall_contact.hpp"
 
 namespace cosph::solid {
 
@@ -87,13 +86,7 @@ void SolidSolver::update_stress(Including including) {
 }
 
 sph::StepLimits SolidSolver::step_limits() const {
-  const SolidParticles& P = particles_;
-  const auto [v_max2, a_max2, c_max] =
-      sph::parallel_max(P.size(), std::array{0.0, 0.0, 0.0}, sph::kTeamAtAnySize, [&](long i) {
-        return std::array{P.v[i].squaredNorm(), P.a[i].squaredNorm(), P.c[i]};
-      });
-  return sph::step_limits(parameters_.run.cfl, parameters_.h, c_max, std::sqrt(v_max2),
-                          std::sqrt(a_max2), 0.0);
+  return solid_step_limits(particles_, parameters_);
 }
 
 void SolidSolver::begin_step(double dt) {
@@ -103,13 +96,10 @@ void SolidSolver::begin_step(double dt) {
 
 void SolidSolver::advance_state(double dt) {
   SolidParticles& P = particles_;
-  const double half = 0.5 * dt;
   // The largest squared displacement since the last sort.
   const double moved2 = sph::parallel_max(P.size(), 0.0, sph::kTeamAtAnySize, [&](long i) {
     if (P.clamped[i]) return 0.0;
-    P.v[i] += half * (P.a[i] + P.external_a[i]);
-    P.x[i] += dt * P.v[i];
-    for (const sph::Region& wall : parameters_.walls) push_out_of_wall(wall, P.x[i], P.v[i]);
+    kick_and_drift(P, i, dt, parameters_);
     return (P.x[i] - x_at_sort_[i]).squaredNorm();
   });
   const double rebuild_at = sph::verlet_rebuild_distance(parameters_.h);
@@ -128,11 +118,7 @@ void SolidSolver::compute_forces() {
 }
 
 void SolidSolver::end_step(double dt) {
-  SolidParticles& P = particles_;
-  const double half = 0.5 * dt;
-  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
-    if (!P.clamped[i]) P.v[i] += half * (P.a[i] + P.external_a[i]);
-  });
+  closing_kick(particles_, dt);
   time_ += dt;
   ++steps_;
   check_state();
@@ -192,10 +178,8 @@ void SolidSolver::check_state() const {
                                   sph::screen::kHighest * rho0))
       reason = "its density left [0.5, 2] rho0 (far outside linear elasticity)";
     if (reason == nullptr) continue;
-    std::ostringstream message;
-    message << "solid particle " << P.id[i] << " at (" << P.x[i].x() << ", " << P.x[i].y()
-            << ") m, t = " << time_ << " s, step " << steps_ << ": " << reason << " (speed "
-            << P.v[i].norm() << " m/s, sound speed " << P.c[i] << " m/s, density " << P.rho[i]
+    std::ostringstream message = runaway_report(P, static_cast<long>(i), time_, steps_, reason);
+    message << ", density " << P.rho[i]
             << " kg/m^3); the run has blown up: try a smaller run.cfl, or turn on "
                "solid.artificial_stress if the body is under tension";
     throw sph::RunawayError(message.str());

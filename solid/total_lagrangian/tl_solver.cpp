@@ -1,17 +1,16 @@
 #include "tl_solver.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <sstream>
 
+#include "kick_drift_kick.hpp"
 #include "reference_configuration.hpp"
 #include "sphcore/pair_terms.hpp"
 #include "sphcore/parallel.hpp"
 #include "sphcore/runaway_error.hpp"
 #include "sphcore/runaway_screen.hpp"
 #include "unmet_walls.hpp"
-#include "wall_contact.hpp"
 
 namespace cosph::solid::tl {
 
@@ -42,35 +41,20 @@ void TLSolver::update() {
 }
 
 sph::StepLimits TLSolver::step_limits() const {
-  const TLParticles& P = particles_;
-  const auto [v_max2, a_max2, c_max] =
-      sph::parallel_max(P.size(), std::array{0.0, 0.0, 0.0}, sph::kTeamAtAnySize, [&](long i) {
-        return std::array{P.v[i].squaredNorm(), P.a[i].squaredNorm(), P.c[i]};
-      });
-  return sph::step_limits(parameters_.run.cfl, parameters_.h, c_max, std::sqrt(v_max2),
-                          std::sqrt(a_max2), 0.0);
+  return solid_step_limits(particles_, parameters_);
 }
 
 void TLSolver::begin_step(double dt) {
   TLParticles& P = particles_;
-  const double half = 0.5 * dt;
   sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
-    if (P.clamped[i]) return;
-    P.v[i] += half * (P.a[i] + P.external_a[i]);
-    P.x[i] += dt * P.v[i];
-    // solid.walls: the same kinematic contact as the Jaumann solid's.
-    for (const sph::Region& wall : parameters_.walls) push_out_of_wall(wall, P.x[i], P.v[i]);
+    if (!P.clamped[i]) kick_and_drift(P, i, dt, parameters_);
   });
   update();
   check_state();  // before the state is shown to anyone, the coupler included
 }
 
 void TLSolver::end_step(double dt) {
-  TLParticles& P = particles_;
-  const double half = 0.5 * dt;
-  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
-    if (!P.clamped[i]) P.v[i] += half * (P.a[i] + P.external_a[i]);
-  });
+  closing_kick(particles_, dt);
   time_ += dt;
   ++steps_;
   check_state();
@@ -142,11 +126,8 @@ void TLSolver::check_state() const {
     else if (!sph::screen::within(P.J[i], sph::screen::kLowest, sph::screen::kHighest))
       reason = "its volume ratio J = det F left [0.5, 2] (far outside linear elasticity)";
     if (reason == nullptr) continue;
-    std::ostringstream message;
-    message << "solid particle " << P.id[i] << " at (" << P.x[i].x() << ", " << P.x[i].y()
-            << ") m, t = " << time_ << " s, step " << steps_ << ": " << reason << " (speed "
-            << P.v[i].norm() << " m/s, sound speed " << P.c[i] << " m/s, J " << P.J[i]
-            << "); the run has blown up: try a smaller run.cfl";
+    std::ostringstream message = runaway_report(P, static_cast<long>(i), time_, steps_, reason);
+    message << ", J " << P.J[i] << "); the run has blown up: try a smaller run.cfl";
     throw sph::RunawayError(message.str());
   }
 }
