@@ -1,7 +1,11 @@
 """What the coupled-case tests share: a case run through the launcher
-(coupler/cosph, three processes), and its CSV output read by column name."""
+(coupler/cosph, three processes), a test class around one such run, and the
+run's CSV output read by column name."""
 import os
+import shutil
 import subprocess
+import tempfile
+import unittest
 
 import numpy as np
 
@@ -28,3 +32,25 @@ def read_csv(path):
         names = [n.split(" [")[0] for n in f.readline().strip().split(",")]
     data = np.loadtxt(path, delimiter=",", skiprows=1, ndmin=2)
     return {name: data[:, k] for k, name in enumerate(names)}
+
+
+class CaseRunTest(unittest.TestCase):
+    """Runs cases/CASE.pbtxt with SETTINGS once for the whole class, into a
+    temporary folder `out` (removed afterwards) with the launcher's output in
+    `log`; every test first checks that the run succeeded."""
+    CASE = None
+    SETTINGS = []
+
+    @classmethod
+    def setUpClass(cls):
+        cls.out = tempfile.mkdtemp(prefix=f"cosph_{cls.CASE}_")
+        result = run_case(cls.CASE, cls.out, cls.SETTINGS)
+        cls.log = result.stdout
+        cls.returncode = result.returncode
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.out, ignore_errors=True)
+
+    def setUp(self):
+        self.assertEqual(self.returncode, 0, self.log)

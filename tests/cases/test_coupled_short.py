@@ -6,32 +6,20 @@ Regenerate the reference after a deliberate physics change with
 COSPH_UPDATE_REFERENCE=1 (and say why in the commit)."""
 import os
 import shutil
-import tempfile
 import unittest
 
 import numpy as np
 
-from case_runs import REPO, read_csv, run_case
+import case_runs
+from case_runs import REPO, read_csv
 
 REFERENCE = os.path.join(REPO, "tests", "reference", "elastic_plate_short.csv")
 END_TIME = 0.004  # s: about 1900 common steps, a few seconds
 
 
-class ElasticPlateShort(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        cls.out = tempfile.mkdtemp(prefix="cosph_plate_")
-        result = run_case("elastic_plate", cls.out,
-                          [f"run.end_time={END_TIME}", "run.output_interval=0.0005"])
-        cls.log = result.stdout
-        cls.returncode = result.returncode
-
-    @classmethod
-    def tearDownClass(cls):
-        shutil.rmtree(cls.out, ignore_errors=True)
-
-    def setUp(self):
-        self.assertEqual(self.returncode, 0, self.log)
+class ElasticPlateShort(case_runs.CaseRunTest):
+    CASE = "elastic_plate"
+    SETTINGS = [f"run.end_time={END_TIME}", "run.output_interval=0.0005"]
 
     def test_matches_stored_reference(self):
         series = read_csv(os.path.join(self.out, "timeseries.csv"))

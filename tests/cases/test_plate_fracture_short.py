@@ -9,34 +9,22 @@ finite.
 Run by ctest; by hand: COSPH_BIN=build/bin /usr/bin/python3 -m unittest discover -s tests/cases"""
 import glob
 import os
-import shutil
-import tempfile
 import unittest
 
 import h5py
 import numpy as np
 
-from case_runs import read_csv, run_case
+import case_runs
+from case_runs import read_csv
 
 END_TIME = 0.04  # s
 SHORT_MODE = [f"run.end_time={END_TIME}", "run.snapshot_interval=0.01",
               "coupling.max_substeps=32", "solid.fracture.weakened[0].yield_stress=4000"]
 
 
-class PlateFractureShort(unittest.TestCase):
-    @classmethod
-    def setUpClass(cls):
-        cls.out = tempfile.mkdtemp(prefix="cosph_fracture_")
-        result = run_case("plate_fracture", cls.out, SHORT_MODE)
-        cls.log = result.stdout
-        cls.returncode = result.returncode
-
-    @classmethod
-    def tearDownClass(cls):
-        shutil.rmtree(cls.out, ignore_errors=True)
-
-    def setUp(self):
-        self.assertEqual(self.returncode, 0, self.log)
+class PlateFractureShort(case_runs.CaseRunTest):
+    CASE = "plate_fracture"
+    SETTINGS = SHORT_MODE
 
     def test_the_plate_breaks_in_its_weakened_band(self):
         series = read_csv(os.path.join(self.out, "timeseries.csv"))
