@@ -15,6 +15,7 @@
 #include <memory>
 #include <sstream>
 #include <thread>
+#include <utility>
 
 #include "child_process.hpp"
 #include "participant/protocol.hpp"
@@ -98,19 +99,27 @@ class CouplerWithDummies : public ::testing::Test {
     return std::make_unique<ChildProcess>(argv, dir_.file(phase));
   }
 
+  // The coupler and two dummies with these arguments, each of the three
+  // ending cleanly within 15 s.
+  void run_to_the_end(std::vector<std::string> fluid_args = {},
+                      std::vector<std::string> solid_args = {}) {
+    auto coupler = start_coupler();
+    auto fluid = start_dummy("fluid", std::move(fluid_args));
+    auto solid = start_dummy("solid", std::move(solid_args));
+    const auto deadline = Clock::now() + 15s;
+    ASSERT_EQ(coupler->wait_until(deadline), 0) << coupler->err();
+    ASSERT_EQ(fluid->wait_until(deadline), 0) << fluid->err();
+    ASSERT_EQ(solid->wait_until(deadline), 0) << solid->err();
+  }
+
   ScratchDir dir_{"coupling"};
   double timeout_ = 10.0;
 };
 
 TEST_F(CouplerWithDummies, RunToTheEndWithTheSmallerStepAndBalancedForces) {
   write_case(5.0);
-  auto coupler = start_coupler();
-  auto fluid = start_dummy("fluid", {"--stress", "1000"});
-  auto solid = start_dummy("solid", {"--stress", "0", "--motion", "-0.01"});
-  const auto deadline = Clock::now() + 15s;
-  ASSERT_EQ(coupler->wait_until(deadline), 0) << coupler->err();
-  ASSERT_EQ(fluid->wait_until(deadline), 0) << fluid->err();
-  ASSERT_EQ(solid->wait_until(deadline), 0) << solid->err();
+  ASSERT_NO_FATAL_FAILURE(
+      run_to_the_end({"--stress", "1000"}, {"--stress", "0", "--motion", "-0.01"}));
 
   // Every step either side was given is the smaller proposal (the last one
   // may be cut to land on end_time), and the run ends at end_time.
@@ -170,13 +179,7 @@ TEST_F(CouplerWithDummies, RunToTheEndWithTheSmallerStepAndBalancedForces) {
 TEST_F(CouplerWithDummies, EachTimeseriesRowHoldsTheGaugesOfItsOwnState) {
   constexpr double kOutputInterval = 0.0025;  // 2.5 steps
   write_case(5.0, 0, kOutputInterval);
-  auto coupler = start_coupler();
-  auto fluid = start_dummy("fluid");
-  auto solid = start_dummy("solid");
-  const auto deadline = Clock::now() + 15s;
-  ASSERT_EQ(coupler->wait_until(deadline), 0) << coupler->err();
-  ASSERT_EQ(fluid->wait_until(deadline), 0) << fluid->err();
-  ASSERT_EQ(solid->wait_until(deadline), 0) << solid->err();
+  ASSERT_NO_FATAL_FAILURE(run_to_the_end());
 
   const Table timeseries(out("timeseries.csv"));
   const std::size_t rows = timeseries.rows.size();
@@ -199,13 +202,8 @@ TEST_F(CouplerWithDummies, EachTimeseriesRowHoldsTheGaugesOfItsOwnState) {
 // with the forces of the window's start held, and both meet at its end.
 TEST_F(CouplerWithDummies, MultiRateWindowIsTheLargerStepAndTheOtherSideSubsteps) {
   write_case(5.0, 4);
-  auto coupler = start_coupler();
-  auto fluid = start_dummy("fluid", {"--stress", "1000"});
-  auto solid = start_dummy("solid", {"--stress", "0", "--motion", "-0.01"});
-  const auto deadline = Clock::now() + 15s;
-  ASSERT_EQ(coupler->wait_until(deadline), 0) << coupler->err();
-  ASSERT_EQ(fluid->wait_until(deadline), 0) << fluid->err();
-  ASSERT_EQ(solid->wait_until(deadline), 0) << solid->err();
+  ASSERT_NO_FATAL_FAILURE(
+      run_to_the_end({"--stress", "1000"}, {"--stress", "0", "--motion", "-0.01"}));
 
   const Table fluid_steps(out("dummy_fluid.csv")), solid_steps(out("dummy_solid.csv"));
   const std::size_t windows = solid_steps.rows.size();
