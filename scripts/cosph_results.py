@@ -56,6 +56,27 @@ def run_case(case, out_dir, settings=(), timeout=3600):
     return elapsed
 
 
+def run_or_reuse(case, out_dir, settings, reuse):
+    """Runs a case into OUT_DIR, or with REUSE takes its earlier run there;
+    returns (wall time in s or None, the first error a process reported or "").
+    The wall time is the launcher's own clock, run now or reused: the same
+    measure for every row of a table."""
+    wall, failure = None, ""
+    if not reuse:
+        try:
+            wall = run_case(case, out_dir, settings)
+        except RuntimeError as error:
+            failure = str(error)
+    wall = logged_wall_time(out_dir) or wall
+    log = os.path.join(out_dir, "launcher.log")
+    if os.path.exists(log):
+        with open(log) as lines:
+            errors = [line for line in lines if line.startswith("[") and "error:" in line]
+        failure = errors[0].strip() if errors else failure
+    # The snapshot's path is of this machine, not of the README's reader.
+    return wall, failure.split(". Last good snapshot:")[0]
+
+
 DURATION = r"(?:(\d+) h )?(?:(\d+) min )?([\d.]+)(?: (s|min))?"
 
 

@@ -87,21 +87,7 @@ def draw_snapshots(out, path):
 def run_or_reuse(suffix, settings, reuse):
     """Runs one configuration (unless reusing); returns (out, wall time or None, failure)."""
     out = os.path.join(cr.REPO, "out", "validation", f"elastic_plate_{suffix}")
-    wall, failure = None, ""
-    if not reuse:
-        try:
-            wall = cr.run_case("elastic_plate", out, settings)
-        except RuntimeError as error:
-            failure = str(error)
-    # The launcher's own clock, whether run now or reused: the same measure
-    # for every row.
-    wall = cr.logged_wall_time(out) or wall
-    log = os.path.join(out, "launcher.log")
-    if os.path.exists(log):
-        failed = [line for line in open(log) if line.startswith("[") and "error:" in line]
-        failure = failed[0].strip() if failed else failure
-    # The snapshot's path is of this machine, not of the README's reader.
-    return out, wall, failure.split(". Last good snapshot:")[0]
+    return (out, *cr.run_or_reuse("elastic_plate", out, settings, reuse))
 
 
 def coupling_cost(out):

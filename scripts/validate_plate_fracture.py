@@ -51,20 +51,7 @@ def output_dir(suffix):
 def run_or_reuse(suffix, settings, reuse):
     """Runs one configuration unless reusing; returns (out, wall time in s or None, error)."""
     out = output_dir(suffix)
-    wall, failure = None, ""
-    if not reuse:
-        try:
-            wall = cr.run_case(CASE, out, settings)
-        except RuntimeError as error:
-            failure = str(error)
-    log = os.path.join(out, "launcher.log")
-    if os.path.exists(log):
-        text = open(log).read()
-        errors = [line for line in text.splitlines() if line.startswith("[") and "error:" in line]
-        failure = errors[0].strip() if errors else failure
-        if wall is None:  # reused: the launcher's own clock
-            wall = cr.logged_wall_time(out)
-    return out, wall, failure
+    return (out, *cr.run_or_reuse(CASE, out, settings, reuse))
 
 
 def snapshots(out, name):
