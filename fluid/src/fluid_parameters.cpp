@@ -14,13 +14,10 @@ FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
   FluidParameters p;
   p.run = sph::read_run_parameters(case_file);
 
-  require(fluid.spacing() > 0.0, case_file, "fluid.spacing",
-          "must be positive, got " + format_number(fluid.spacing()) + " m");
-  p.dx = fluid.spacing();
-  const double h_factor = fluid.h_factor() > 0.0 ? fluid.h_factor() : 1.3;
-  require(h_factor >= 1.0 && h_factor <= 2.0, case_file, "fluid.h_factor",
-          "must lie in [1, 2] (SPEC.md: 1.2 to 1.5), got " + format_number(fluid.h_factor()));
-  p.h = h_factor * p.dx;
+  const sph::Resolution resolution =
+      sph::read_resolution(case_file, "fluid", fluid.spacing(), fluid.h_factor());
+  p.dx = resolution.dx;
+  p.h = resolution.h;
   require(fluid.density() > 0.0, case_file, "fluid.density",
           "must be positive, got " + format_number(fluid.density()) + " kg/m^3");
   p.rho0 = fluid.density();

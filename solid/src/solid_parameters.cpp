@@ -79,13 +79,10 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
           "in solid.executable)");
   p.model =
       solid.model() == "total_lagrangian" ? SolidModel::total_lagrangian : SolidModel::jaumann;
-  require(solid.spacing() > 0.0, case_file, "solid.spacing",
-          "must be positive, got " + format_number(solid.spacing()) + " m");
-  p.dx = solid.spacing();
-  const double h_factor = solid.h_factor() > 0.0 ? solid.h_factor() : 1.3;
-  require(h_factor >= 1.0 && h_factor <= 2.0, case_file, "solid.h_factor",
-          "must lie in [1, 2] (SPEC.md: 1.2 to 1.5), got " + format_number(solid.h_factor()));
-  p.h = h_factor * p.dx;
+  const sph::Resolution resolution =
+      sph::read_resolution(case_file, "solid", solid.spacing(), solid.h_factor());
+  p.dx = resolution.dx;
+  p.h = resolution.h;
   require(solid.density() > 0.0, case_file, "solid.density",
           "must be positive, got " + format_number(solid.density()) + " kg/m^3");
   p.rho0 = solid.density();

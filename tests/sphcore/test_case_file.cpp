@@ -6,6 +6,7 @@
 #include <string>
 
 #include "sphcore/case_file.hpp"
+#include "sphcore/run_parameters.hpp"
 #include "test_support.hpp"
 
 namespace {
@@ -145,6 +146,26 @@ TEST(CaseFile, RequireNamesFileFieldAndReason) {
   const std::string message =
       config_error([&] { sph::require(false, c, "fluid.spacing", "must be positive"); });
   EXPECT_EQ(message, kDamBreak + ": fluid.spacing: must be positive");
+}
+
+// Both solvers read their spacing and smoothing length through
+// read_resolution: h_factor defaults to 1.3, and each error names its block.
+TEST(Resolution, SmoothingLengthIsTheFactorTimesTheSpacing) {
+  const sph::CaseFile c = sph::load_case(kDamBreak);
+  const sph::Resolution given = sph::read_resolution(c, "solid", 0.002, 1.5);
+  EXPECT_EQ(given.dx, 0.002);
+  EXPECT_DOUBLE_EQ(given.h, 0.003);
+  EXPECT_DOUBLE_EQ(sph::read_resolution(c, "solid", 0.002, 0.0).h, 1.3 * 0.002);
+}
+
+TEST(Resolution, BadSpacingOrFactorNamesTheBlocksField) {
+  const sph::CaseFile c = sph::load_case(kDamBreak);
+  EXPECT_EQ(config_error([&] { sph::read_resolution(c, "solid", 0.0, 1.3); }),
+            kDamBreak + ": solid.spacing: must be positive, got 0 m");
+  EXPECT_EQ(config_error([&] { sph::read_resolution(c, "fluid", 0.01, 2.5); }),
+            kDamBreak + ": fluid.h_factor: must lie in [1, 2] (SPEC.md: 1.2 to 1.5), got 2.5");
+  EXPECT_NE(config_error([&] { sph::read_resolution(c, "fluid", 0.01, 0.5); }).find("h_factor"),
+            std::string::npos);
 }
 
 }  // namespace

@@ -1,6 +1,8 @@
 // The case's "run" block, validated, with its defaults applied.
 #pragma once
 
+#include <string>
+
 #include "sphcore/case_file.hpp"
 #include "sphcore/types.hpp"
 
@@ -16,6 +18,16 @@ struct RunParameters {
 };
 
 RunParameters read_run_parameters(const CaseFile& case_file);
+
+// A phase's particle spacing dx and smoothing length h = h_factor dx, from its
+// block's `spacing` and `h_factor` (1.3 when unset), validated; `block`
+// ("fluid", "solid") names the fields in errors.
+struct Resolution {
+  double dx;
+  double h;
+};
+Resolution read_resolution(const CaseFile& case_file, const std::string& block, double spacing,
+                           double h_factor);
 
 }  // namespace sph
 
