@@ -95,15 +95,21 @@ def coupling_cost(out):
     forces, that time per step (s), the coupling's share of the step, and the
     largest force imbalance.
 
-    The coupling's share of the step is what the coupling adds to the run: the
-    solver that sets the pace (the one that waits least) waits for the
-    coupler's answers after its own work on each step that long. The coupler's
+    The coupling's share of the step is what the coupling adds to the run: on
+    each step, the solver whose state reached the coupler last (it sets the
+    pace) waits that long for the coupler's answer after its own work on the
+    step; the coupler sums those waits (pace_setter_waiting). The other
+    solver's waits also hold its wait for the slower one, which is the
+    imbalance of the two, not the coupling's cost. The coupler's
     own work runs while the solvers compute their forces, so it is not the
     same thing."""
     coupling = cr.read_csv(os.path.join(out, "coupling.csv"))
     own = coupling["messaging"][-1] + coupling["pair_forces"][-1]
     total = own + coupling["waiting"][-1]
-    exposed = min(coupling["fluid_waiting"][-1], coupling["solid_waiting"][-1])
+    if "pace_setter_waiting" in coupling:
+        exposed = coupling["pace_setter_waiting"][-1]
+    else:  # a run from before the coupler summed them: the solver that waited least
+        exposed = min(coupling["fluid_waiting"][-1], coupling["solid_waiting"][-1])
     imbalance = float(np.max(np.abs(coupling["force_on_fluid_x"] + coupling["force_on_solid_x"])))
     steps = int(coupling["step"][-1])
     return (steps, float(total), float(own / max(total, 1e-30)), float(own / max(steps, 1)),
@@ -228,8 +234,10 @@ def main():
                  f"points ({len(experiment['x']['t_s'])} in x, {len(experiment['y']['t_s'])} in y, "
                  f"t <= {experiment['x']['t_s'][-1]:.2f} s), by `scripts/validate_elastic_plate.py`: "
                  "water 2 mm, plate 1 mm unless the row says otherwise. The coupling's share of the "
-                 "step is the part of the run that the solver setting the pace (the one that waits "
-                 "least) spends waiting for the coupler's answers after its own work on a step. "
+                 "step is the part of the run that the solver setting the pace (on each step, the "
+                 "one whose state reached the coupler last) spends waiting for the coupler's "
+                 "answer after its own work on the step; the other solver's waits also hold its "
+                 "wait for the slower one. "
                  "The coupler's own share is the part of its time spent on messaging and pair "
                  "forces, the rest it waits for the solvers: that work runs while the solvers "
                  "compute their own forces.\n\n"

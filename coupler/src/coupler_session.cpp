@@ -52,6 +52,7 @@ class Session {
     handshake();
     for (long step = 0;; ++step) {
       const int last_in = receive_states(step);
+      count_pace_setter_wait(last_in);
       const bool stop = answer(step, last_in);
       if (stop) return 0;
       if (sph::stop_requested()) fail("the coupler was interrupted (Ctrl-C or SIGTERM)");
@@ -200,6 +201,20 @@ class Session {
     return last_in;
   }
 
+  // Each state carries its solver's waits for the answers so far, the last
+  // one being that for the previous step's answer. The solver whose state
+  // came last in that step waited for the coupling alone: the messages and
+  // the pair forces. The other also waited for it to catch up, which is the
+  // two solvers' imbalance, not the coupling's cost.
+  void count_pace_setter_wait(int last_in) {
+    const double waited[2] = {peers_[kFluid].state.waiting(), peers_[kSolid].state.waiting()};
+    if (previous_last_in_ >= 0)
+      pace_setter_waiting_ += waited[previous_last_in_] - previous_waiting_[previous_last_in_];
+    previous_waiting_[kFluid] = waited[kFluid];
+    previous_waiting_[kSolid] = waited[kSolid];
+    previous_last_in_ = last_in;
+  }
+
   // Returns whether the run is over.
   bool answer(long step, int last_in) {
     const auto pair_start = Clock::now();
@@ -260,7 +275,7 @@ class Session {
       for (const auto& gauge : peers_[side].gauges) row.push_back(gauge.value());
     row.push_back(level_ < 0 ? 0.0 : peers_[kFluid].gauges[level_].value());
     timeseries_->write_row(row);
-    const std::array<double, 15> coupling{t,
+    const std::array<double, 16> coupling{t,
                                           forces.force_on_fluid.x(),
                                           forces.force_on_fluid.y(),
                                           forces.force_on_solid.x(),
@@ -274,7 +289,8 @@ class Session {
                                           pair_seconds_,
                                           dt,
                                           peers_[kFluid].state.waiting(),
-                                          peers_[kSolid].state.waiting()};
+                                          peers_[kSolid].state.waiting(),
+                                          pace_setter_waiting_};
     coupling_->write_row(coupling);
   }
 
@@ -314,7 +330,8 @@ class Session {
                                                {"pair_forces", "s"},
                                                {"dt", "s"},
                                                {"fluid_waiting", "s"},
-                                               {"solid_waiting", "s"}});
+                                               {"solid_waiting", "s"},
+                                               {"pace_setter_waiting", "s"}});
   }
 
   CouplerSettings settings_;
@@ -330,6 +347,11 @@ class Session {
   // answer (CouplingStep.report_gauges), and the first.
   bool row_due_ = true;
   double wait_seconds_ = 0.0, messaging_seconds_ = 0.0, pair_seconds_ = 0.0;
+  // count_pace_setter_wait: the waits of the solver that came last, summed
+  // step by step, and what it needs of the step before.
+  double pace_setter_waiting_ = 0.0;
+  double previous_waiting_[2] = {0.0, 0.0};
+  int previous_last_in_ = -1;
   sph::ProgressReporter progress_{settings_.run.end_time};
 };
 

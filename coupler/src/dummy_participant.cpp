@@ -7,6 +7,9 @@
 // received. The fluid block lies left of x = 0, the solid block right of it,
 // so the two meet across x = 0.
 //
+// --busy-ms W makes each step take W ms of "work" before the state goes out,
+// on every step or, with --busy-parity 0 or 1, on the even or odd ones only.
+//
 // Failure modes for the tests: --die-at-step K exits abruptly (no goodbye),
 // --hang-at-step K stops answering, --garbage-at-step K sends bytes that are
 // not a message, --version V announces another protocol version. The last two
@@ -40,6 +43,8 @@ struct DummyOptions {
   double motion = 0.0;  // m/s, x velocity
   double stress = -1;   // Pa, pressure P; negative: 1000 Pa for the fluid, 0 for the solid
   double timeout = 10.0;
+  double busy_ms = 0.0;
+  long busy_parity = -1;  // negative: busy on every step
   long die_at = -1, hang_at = -1, garbage_at = -1;
   long version = -1;  // negative: the right one
 };
@@ -47,20 +52,21 @@ struct DummyOptions {
 const char* kUsage =
     "usage: cosph-dummy --phase fluid|solid --endpoint E --out DIR [--particles N] [--dt DT]\n"
     "       [--end T] [--spacing DX] [--motion V] [--stress P] [--timeout S]\n"
+    "       [--busy-ms W] [--busy-parity 0|1]\n"
     "       [--die-at-step K] [--hang-at-step K] [--garbage-at-step K] [--version V]";
 
 DummyOptions parse_options(int argc, char** argv) {
   DummyOptions o;
   const std::map<std::string, std::string*> texts{
       {"--phase", &o.phase}, {"--endpoint", &o.endpoint}, {"--out", &o.out_dir}};
-  const std::map<std::string, double*> numbers{
-      {"--dt", &o.dt},         {"--end", &o.end},       {"--spacing", &o.spacing},
-      {"--motion", &o.motion}, {"--stress", &o.stress}, {"--timeout", &o.timeout}};
-  const std::map<std::string, long*> integers{{"--particles", &o.particles},
-                                              {"--die-at-step", &o.die_at},
-                                              {"--hang-at-step", &o.hang_at},
-                                              {"--garbage-at-step", &o.garbage_at},
-                                              {"--version", &o.version}};
+  const std::map<std::string, double*> numbers{{"--dt", &o.dt},           {"--end", &o.end},
+                                               {"--spacing", &o.spacing}, {"--motion", &o.motion},
+                                               {"--stress", &o.stress},   {"--timeout", &o.timeout},
+                                               {"--busy-ms", &o.busy_ms}};
+  const std::map<std::string, long*> integers{
+      {"--particles", &o.particles},  {"--die-at-step", &o.die_at},
+      {"--hang-at-step", &o.hang_at}, {"--garbage-at-step", &o.garbage_at},
+      {"--version", &o.version},      {"--busy-parity", &o.busy_parity}};
   for (int i = 1; i < argc; i += 2) {
     const std::string option = argv[i];
     if (i + 1 >= argc) throw sph::ConfigError(option + " needs a value\n" + kUsage);
@@ -115,6 +121,8 @@ class DummySolver {
     csv_ << steps_ << ',' << time_ << ',' << dt << ',' << force_.x() << ',' << force_.y()
          << std::endl;
     for (Vec2& x : x_) x.x() += o_.motion * dt;
+    if (o_.busy_ms > 0.0 && (o_.busy_parity < 0 || steps_ % 2 == o_.busy_parity))
+      std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(o_.busy_ms));
   }
   void end_step(double dt) {
     time_ += dt;

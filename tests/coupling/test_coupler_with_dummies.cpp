@@ -173,6 +173,28 @@ TEST_F(CouplerWithDummies, RunToTheEndWithTheSmallerStepAndBalancedForces) {
   EXPECT_FALSE(std::filesystem::exists(dir_.file("coupler.sock")));
 }
 
+// The solvers take turns being slow: each waits for the other on every
+// second step, which is their imbalance, not the coupling's cost. The waits
+// of the one whose state came last, step by step, are the coupling's alone:
+// the messages and the pair forces, a small part of either solver's waits.
+TEST_F(CouplerWithDummies, PaceSetterWaitsCountTheCouplingAloneWhenTheSolversTakeTurns) {
+  write_case(5.0);
+  ASSERT_NO_FATAL_FAILURE(run_to_the_end({"--busy-ms", "20", "--busy-parity", "0"},
+                                         {"--busy-ms", "20", "--busy-parity", "1"}));
+  const Table coupling(out("coupling.csv"));
+  const std::size_t last = coupling.rows.size() - 1;
+  const double fluid = coupling.at(last, "fluid_waiting"),
+               solid = coupling.at(last, "solid_waiting");
+  const double pace_setter = coupling.at(last, "pace_setter_waiting");
+  // Each waited about 20 ms on every second of the run's 20 steps.
+  EXPECT_GT(std::min(fluid, solid), 0.15) << "fluid " << fluid << " s, solid " << solid << " s";
+  EXPECT_GT(pace_setter, 0.0);
+  EXPECT_LT(pace_setter, 0.3 * std::min(fluid, solid))
+      << "fluid " << fluid << " s, solid " << solid << " s";
+  for (std::size_t r = 1; r < coupling.rows.size(); ++r)
+    EXPECT_GE(coupling.at(r, "pace_setter_waiting"), coupling.at(r - 1, "pace_setter_waiting"));
+}
+
 // The solvers send gauges only with the states the coupler asks them for,
 // those due in timeseries.csv: each row must hold the gauges of its own
 // state (the dummies count their steps), not those of an earlier one.
