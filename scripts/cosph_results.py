@@ -72,6 +72,9 @@ def run_or_reuse(case, out_dir, settings, reuse):
     if os.path.exists(log):
         with open(log) as lines:
             errors = [line for line in lines if line.startswith("[") and "error:" in line]
+        # The process that failed first, before the others' reports that it
+        # stopped ("fluid stopped: ..."), whichever the launcher printed first.
+        errors.sort(key=lambda line: " stopped: " in line)
         failure = errors[0].strip() if errors else failure
     # The snapshot's path is of this machine, not of the README's reader.
     return wall, failure.split(". Last good snapshot:")[0]
