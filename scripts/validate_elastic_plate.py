@@ -106,10 +106,10 @@ def coupling_cost(out):
     coupling = cr.read_csv(os.path.join(out, "coupling.csv"))
     own = coupling["messaging"][-1] + coupling["pair_forces"][-1]
     total = own + coupling["waiting"][-1]
-    if "pace_setter_waiting" in coupling:
-        exposed = coupling["pace_setter_waiting"][-1]
-    else:  # a run from before the coupler summed them: the solver that waited least
-        exposed = min(coupling["fluid_waiting"][-1], coupling["solid_waiting"][-1])
+    if "pace_setter_waiting" not in coupling:
+        raise SystemExit(f"{out}/coupling.csv has no pace_setter_waiting column: a run of an "
+                         "older coupler; run again without --reuse")
+    exposed = coupling["pace_setter_waiting"][-1]
     imbalance = float(np.max(np.abs(coupling["force_on_fluid_x"] + coupling["force_on_solid_x"])))
     steps = int(coupling["step"][-1])
     return (steps, float(total), float(own / max(total, 1e-30)), float(own / max(steps, 1)),

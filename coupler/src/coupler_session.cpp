@@ -207,12 +207,10 @@ class Session {
   // the pair forces. The other also waited for it to catch up, which is the
   // two solvers' imbalance, not the coupling's cost.
   void count_pace_setter_wait(int last_in) {
-    const double waited[2] = {peers_[kFluid].state.waiting(), peers_[kSolid].state.waiting()};
-    if (previous_last_in_ >= 0)
-      pace_setter_waiting_ += waited[previous_last_in_] - previous_waiting_[previous_last_in_];
-    previous_waiting_[kFluid] = waited[kFluid];
-    previous_waiting_[kSolid] = waited[kSolid];
-    previous_last_in_ = last_in;
+    if (pace_setter_ >= 0)
+      pace_setter_waiting_ += peers_[pace_setter_].state.waiting() - pace_setter_waited_before_;
+    pace_setter_ = last_in;
+    pace_setter_waited_before_ = peers_[last_in].state.waiting();
   }
 
   // Returns whether the run is over.
@@ -348,10 +346,11 @@ class Session {
   bool row_due_ = true;
   double wait_seconds_ = 0.0, messaging_seconds_ = 0.0, pair_seconds_ = 0.0;
   // count_pace_setter_wait: the waits of the solver that came last, summed
-  // step by step, and what it needs of the step before.
+  // step by step; the side that came last in the step before (none before
+  // the first), and its waits up to that step.
   double pace_setter_waiting_ = 0.0;
-  double previous_waiting_[2] = {0.0, 0.0};
-  int previous_last_in_ = -1;
+  int pace_setter_ = -1;
+  double pace_setter_waited_before_ = 0.0;
   sph::ProgressReporter progress_{settings_.run.end_time};
 };
 
