@@ -34,8 +34,11 @@ struct PairsWithin {
 void find_pairs(const SolidParticles& P, long i, std::span<const int> candidates, double support2,
                 const kernel::Value& W_of, const kernel::GradientFactor& gradient_factor,
                 PairsWithin& pairs) {
-  pairs.J.resize(candidates.size()), pairs.W.resize(candidates.size());
-  pairs.F.resize(candidates.size());
+  // Grown, never shrunk: a resize to fit each particle zeroed the new room.
+  if (pairs.J.size() < candidates.size()) {
+    pairs.J.resize(candidates.size()), pairs.W.resize(candidates.size());
+    pairs.F.resize(candidates.size());
+  }
   // F holds r^2 until the kernel loop.
   pairs.count =
       sph::filter_within(candidates, P.x, P.x[i], support2, pairs.J.data(), pairs.F.data());
@@ -113,15 +116,20 @@ void compute_rates(SolidParticles& P, const sph::CandidateList& candidates,
         own.add(P.volume[j], pairs.F[k] * x_ij, x_ij, v_i - P.v[j]);
       }
       neighbours.resize(pairs.count - later);
+      std::size_t listed = 0;
       for (std::size_t k = later; k < pairs.count; ++k) {
         const int j = pairs.J[k];
         const Vec2 x_ij = x_i - P.x[j];
         const Vec2 grad_W_ij = pairs.F[k] * x_ij;
         const Vec2 v_ij = v_i - P.v[j];
-        neighbours[k - later] = {j, pairs.W[k], grad_W_ij};
+        // A pair of two clamped particles moves neither: it is not listed
+        // for the momentum pass.
+        neighbours[listed] = {j, pairs.W[k], grad_W_ij};
+        listed += static_cast<std::size_t>(!(P.clamped[i] & P.clamped[j]));
         own.add(P.volume[j], grad_W_ij, x_ij, v_ij);
         shares.share(b, P.rate_sums.data(), j).add(V_i, grad_W_ij, x_ij, v_ij);
       }
+      neighbours.resize(listed);
       P.rate_sums[i] += own;
     }
   });
@@ -158,8 +166,8 @@ void compute_accelerations(SolidParticles& P, const SolidParameters& par) {
   // Each pair is worked out once, by the lower index, which lists it (the
   // rates pass), and which gives the higher one its share (sph::OrderedShares,
   // as the fluid's momentum pass): the bracket is symmetric in i and j, and
-  // grad_j W_ji = -grad_i W_ij. The pairs of an inert particle act on
-  // clamped particles only, whose accelerations are zero: none is listed.
+  // grad_j W_ji = -grad_i W_ij. A pair of two clamped particles (an inert
+  // particle's are all such) acts on accelerations that are zero: none is listed.
   sph::OrderedShares<Vec2>& shares = P.a_shares;
   const long blocks = shares.prepare(n, use_team, [&](long i) -> long {
     const std::vector<Neighbour>& neighbours = P.neighbours[i];
