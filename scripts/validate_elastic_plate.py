@@ -144,7 +144,8 @@ def main():
     parser.add_argument("--reuse", action="store_true",
                         help="analyse the runs in out/validation/elastic_plate_* instead of running")
     parser.add_argument("--only", action="append", default=[],
-                        help="run only these configurations (sync, multirate, stress_sum)")
+                        help="run only these configurations ("
+                             + ", ".join(suffix for _, suffix, _ in RUNS) + ")")
     args = parser.parse_args()
 
     experiment = {axis: cr.reference(f"antoci2007_plate_exp_{axis}.csv") for axis in "xy"}
