@@ -246,7 +246,7 @@ def main():
                  "The coupler's own share is the part of its time spent on messaging and pair "
                  "forces, the rest it waits for the solvers: that work runs while the solvers "
                  "compute their own forces.\n\n"
-                 "Speed targets of issue 6 (0.4 s on two cores): "
+                 "Speed targets (0.4 s on two cores): "
                  + ("; ".join(targets) if targets else "not run") + ".\n\n"
                  + "\n".join(f"- {note}" for note in notes))
     cr.write_points("elastic_plate", points)

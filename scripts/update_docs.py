@@ -1,0 +1,125 @@
+#!/usr/bin/python3
+"""Copies the result tables the scripts wrote (docs/results/NAME.md) into the
+pages that show them, between the markers <!-- results:NAME --> and
+<!-- /results:NAME -->, so that every number in the docs comes from a script.
+The README's table of cases (marker results:cases) is made here, from those
+same tables. Run after the validation and benchmark scripts.
+
+  /usr/bin/python3 scripts/update_docs.py           rewrite the pages
+  /usr/bin/python3 scripts/update_docs.py --check   exit 1 if a page is stale
+"""
+import argparse
+import glob
+import os
+import re
+import sys
+
+import cosph_results as cr
+
+PAGES = ["README.md"] + sorted(os.path.relpath(p, cr.REPO)
+                               for p in glob.glob(os.path.join(cr.REPO, "docs", "*.md")))
+MARKER = re.compile(r"<!-- results:([\w-]+) -->.*?<!-- /results:\1 -->", re.S)
+
+
+def table_rows(name):
+    """The rows of the table in docs/results/NAME.md as {column: text}, or []."""
+    path = os.path.join(cr.RESULTS, name + ".md")
+    if not os.path.exists(path):
+        return []
+    lines = [line.strip() for line in open(path) if line.strip().startswith("|")]
+    if len(lines) < 3:
+        return []
+    cells = [[cell.strip() for cell in line.strip("|").split("|")] for line in lines]
+    return [dict(zip(cells[0], row)) for row in cells[2:]]
+
+
+def first(rows, match=None):
+    """The first row whose columns start with the texts of MATCH ({column: text}), or None."""
+    for row in rows:
+        if all(row.get(column, "").startswith(text) for column, text in (match or {}).items()):
+            return row
+    return None
+
+
+def case_results():
+    """One line of result per case, taken from the validation tables."""
+    missing = "no result yet: run its validation script"
+    dam = first(table_rows("dam_break"))
+    mps = first(table_rows("dam_break"), {"spacing (mm)": "Koshizuka"})
+    plate = first(table_rows("oscillating_plate"),
+                  {"velocity gradient": "quadratic", "particles across H": "16"})
+    elastic = first(table_rows("elastic_plate"), {"run": "cosph, synchronised"})
+    khayyer = first(table_rows("elastic_plate"), {"run": "Khayyer"})
+    fracture = first(table_rows("plate_fracture"), {"run": "synchronised"})
+
+    def text(row, make):
+        return make(row) if row else missing
+
+    rows = [
+        ("[dam break](cases/dam_break.pbtxt)", "water column collapsing in a tank",
+         text(dam, lambda r: f"front RMS error {r['RMS rel. error (T <= 3.1)']} against Martin & "
+              f"Moyce 1952 at {r['spacing (mm)']} mm"
+              + (f" (Koshizuka & Oka's MPS: {mps['RMS rel. error (T <= 3.1)']})" if mps else "")),
+         "validation.md#dam-break-scene-1"),
+        ("[oscillating plate](cases/oscillating_plate.pbtxt)", "a clamped plate vibrating in vacuum",
+         text(plate, lambda r: f"period {r['error vs theory']} against thin-plate theory at "
+              f"{r['particles across H']} particles across"),
+         "validation.md#the-solid-alone-oscillating-plate"),
+        ("[elastic plate](cases/elastic_plate.pbtxt)", "water bending a rubber plate (the main case)",
+         text(elastic, lambda r: f"tip RMS {r['tip x RMS (mm)']} / {r['tip y RMS (mm)']} mm (x / y) "
+              f"against Antoci et al. 2007"
+              + (f" (Khayyer 2018: {khayyer['tip x RMS (mm)']} / {khayyer['tip y RMS (mm)']})"
+                 if khayyer else "")),
+         "validation.md#coupled-the-elastic-plate-of-antoci-et-al-scene-2"),
+        ("[plate fracture](cases/plate_fracture.pbtxt)", "the same plate, weakened, broken by the water",
+         text(fracture, lambda r: f"first failure at t = {r['first failure t (s)']} s, the piece "
+              f"free by {r['piece free by t (s)']} s, its centre at x = {r['broken_x at end (m)']} m at the end"),
+         "validation.md#fracture-the-plate-broken-by-the-flow-scene-3"),
+    ]
+    lines = ["| case | what | result | details |", "|---|---|---|---|"]
+    lines += [f"| {case} | {what} | {result} | [validation](docs/{link}) |"
+              for case, what, result, link in rows]
+    return "\n".join(lines)
+
+
+def body(name):
+    if name == "cases":
+        return case_results()
+    path = os.path.join(cr.RESULTS, name + ".md")
+    if not os.path.exists(path):
+        return f"_(no results yet: run the script that writes docs/results/{name}.md)_"
+    return open(path).read().strip()
+
+
+def updated(text):
+    return MARKER.sub(lambda m: f"<!-- results:{m.group(1)} -->\n{body(m.group(1))}\n"
+                                f"<!-- /results:{m.group(1)} -->", text)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--check", action="store_true",
+                        help="change nothing; exit 1 naming each page that is not current")
+    args = parser.parse_args()
+    stale = []
+    for page in PAGES:
+        path = os.path.join(cr.REPO, page)
+        old = open(path).read()
+        new = updated(old)
+        if new == old:
+            continue
+        stale.append(page)
+        if not args.check:
+            with open(path, "w") as f:
+                f.write(new)
+    if args.check:
+        for page in stale:
+            print(f"update_docs: {page} is not current: run /usr/bin/python3 scripts/update_docs.py",
+                  file=sys.stderr)
+        return 1 if stale else 0
+    print("updated: " + ", ".join(stale) if stale else "all pages already current")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
