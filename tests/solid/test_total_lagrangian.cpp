@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -182,7 +183,9 @@ struct Exit {
 };
 
 Exit run(const std::string& executable, const std::string& arguments) {
-  const std::string err = testing::temporary_path("tl_stderr.txt");
+  // One file per process: ctest -j runs this file's tests in parallel processes.
+  const std::string err =
+      testing::temporary_path("tl_stderr_" + std::to_string(::getpid()) + ".txt");
   const std::string command =
       std::string(COSPH_BIN_DIR) + "/" + executable + " " + arguments + " > /dev/null 2> " + err;
   const int status = std::system(command.c_str());
