@@ -8,13 +8,14 @@
 // absolute path of the program solid.executable names (solid_executable.hpp).
 // A multi-rate coupled case (coupling.max_substeps > 1, the solid at its own
 // step) ends with a line "separate-cores": the launcher then gives each solver
-// cores of its own (README, "Speed").
+// cores of its own (docs/coupling.md, "Multi-rate coupling").
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
 
+#include "coupler_settings.hpp"
 #include "fluid_parameters.hpp"
 #include "fluid_scene.hpp"
 #include "solid_executable.hpp"
@@ -62,6 +63,9 @@ int plan(int argc, char** argv) {
     const auto parameters = cosph::fluid::read_fluid_parameters(case_file);
     cosph::fluid::check_walls_close(case_file, parameters);
   }
+  // The coupler's own fields too, so that a bad one stops the run before
+  // any process starts.
+  if (fluid && solid) cosph::coupler::read_coupler_settings(case_file);
   std::vector<std::string> programs;
   if (fluid && solid) programs = {"cosph-coupler", "cosph-fluid"};
   if (fluid && !solid) programs = {"cosph-fluid"};

@@ -23,6 +23,7 @@
 #include <thread>
 
 #include "participant/coupled_run.hpp"
+#include "participant/coupling_timeout.hpp"
 #include "participant/protocol.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/solver_cli.hpp"
@@ -42,7 +43,7 @@ struct DummyOptions {
   double spacing = 1e-3;
   double motion = 0.0;  // m/s, x velocity
   double stress = -1;   // Pa, pressure P; negative: 1000 Pa for the fluid, 0 for the solid
-  double timeout = 10.0;
+  double timeout = cosph::coupling::kDefaultTimeoutSeconds;
   double busy_ms = 0.0;
   long busy_parity = -1;  // negative: busy on every step
   long die_at = -1, hang_at = -1, garbage_at = -1;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "participant/coupled_run.hpp"
+#include "participant/coupling_timeout.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/solver_cli.hpp"
 #include "sphcore/standalone_run.hpp"
@@ -18,8 +19,7 @@ int run_solver(Solver& solver, const sph::RunParameters& run, const sph::CaseFil
                const sph::SolverArgs& args, const std::string& name, PhaseKind phase,
                const std::string& description) {
   if (!args.endpoint.empty()) {
-    const double timeout =
-        case_file.config.coupling().timeout() > 0.0 ? case_file.config.coupling().timeout() : 10.0;
+    const double timeout = coupling_timeout_seconds(case_file);
     CoupledRun<Solver> coupled(solver, run,
                                {args.out_dir, name, phase, description, args.endpoint, timeout});
     return coupled.run();

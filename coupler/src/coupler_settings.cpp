@@ -1,0 +1,79 @@
+#include "coupler_settings.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "participant/coupling_timeout.hpp"
+
+namespace cosph::coupler {
+namespace {
+
+// A coefficient of the case if given, else `fallback`'s if given, else `otherwise`.
+double first_positive(double given, double fallback, double otherwise) {
+  return given > 0.0 ? given : fallback > 0.0 ? fallback : otherwise;
+}
+
+void require_finite_non_negative(double value, const sph::CaseFile& case_file,
+                                 const std::string& field) {
+  sph::require(std::isfinite(value), case_file, field,
+               "must be a finite number, got " + sph::format_number(value));
+  sph::require(value >= 0.0, case_file, field,
+               "must not be negative, got " + sph::format_number(value));
+}
+
+CrossPhaseParameters read_cross_phase_parameters(const sph::CaseFile& case_file) {
+  const auto& coupling = case_file.config.coupling();
+  const std::string& name = coupling.interface();
+  sph::require(name.empty() || name == "moving_wall" || name == "stress_sum", case_file,
+               "coupling.interface",
+               "unknown interface model '" + name + "' (known: moving_wall, stress_sum)");
+  require_finite_non_negative(coupling.artificial_viscosity(), case_file,
+                              "coupling.artificial_viscosity");
+  require_finite_non_negative(coupling.artificial_viscosity_quadratic(), case_file,
+                              "coupling.artificial_viscosity_quadratic");
+  CrossPhaseParameters par;
+  par.model = name == "stress_sum" ? InterfaceModel::stress_sum : InterfaceModel::moving_wall;
+  par.gravity = sph::read_run_parameters(case_file).gravity;
+  if (par.model == InterfaceModel::stress_sum) {
+    // Damped as solid pairs are (A ~ 1 for a solid, docs/physics.md,
+    // "Artificial viscosity"): c_ij there is mostly the solid's sound speed.
+    // Damped as water (A = 0.02), the interface let water at negative
+    // pressure clump into the bending plate; with the mean of the two
+    // phases' coefficients the elastic plate still blew up.
+    const auto& solid = case_file.config.solid();
+    par.A = first_positive(coupling.artificial_viscosity(), solid.artificial_viscosity(), 1.0);
+    par.B = first_positive(coupling.artificial_viscosity_quadratic(),
+                           solid.artificial_viscosity_quadratic(), 1.0);
+  } else {
+    // Water against a wall: the water's coefficients (and its sound speed).
+    const auto& fluid = case_file.config.fluid();
+    par.A = first_positive(coupling.artificial_viscosity(), fluid.artificial_viscosity(), 0.02);
+    par.B = first_positive(coupling.artificial_viscosity_quadratic(),
+                           fluid.artificial_viscosity_quadratic(), 0.0);
+  }
+  return par;
+}
+
+}  // namespace
+
+CouplerSettings read_coupler_settings(const sph::CaseFile& case_file) {
+  sph::require(case_file.config.has_fluid() && case_file.config.has_solid(), case_file,
+               "fluid, solid", "a coupled case needs both");
+  const auto& coupling = case_file.config.coupling();
+  CouplerSettings settings;
+  settings.run = sph::read_run_parameters(case_file);
+  settings.timeout_seconds = coupling::coupling_timeout_seconds(case_file);
+  settings.cross_phase = read_cross_phase_parameters(case_file);
+  sph::require(coupling.max_substeps() >= 0, case_file, "coupling.max_substeps",
+               "must not be negative, got " + std::to_string(coupling.max_substeps()));
+  settings.max_substeps = std::max(1, coupling.max_substeps());
+  sph::require(coupling.solid_step().empty() || coupling.solid_step() == "own" ||
+                   coupling.solid_step() == "fluid",
+               case_file, "coupling.solid_step",
+               "must be \"own\" (default) or \"fluid\", not \"" + coupling.solid_step() + "\"");
+  settings.solid_at_fluid_step = coupling.solid_step() == "fluid";
+  return settings;
+}
+
+}  // namespace cosph::coupler

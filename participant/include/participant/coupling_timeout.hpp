@@ -1,0 +1,25 @@
+// How long any process of a coupled run waits for a peer (coupling.timeout),
+// read in one place for the coupler and the solvers alike.
+#pragma once
+
+#include <cmath>
+
+#include "sphcore/case_file.hpp"
+
+namespace cosph::coupling {
+
+// What coupling.timeout = 0 means: long enough for a solver's slowest step on
+// a busy machine, short enough that a dead peer is noticed.
+inline constexpr double kDefaultTimeoutSeconds = 10.0;
+
+// coupling.timeout in seconds, or the default; refuses a negative or
+// non-finite value, naming the file and the field.
+inline double coupling_timeout_seconds(const sph::CaseFile& case_file) {
+  const double timeout = case_file.config.coupling().timeout();
+  sph::require(
+      std::isfinite(timeout) && timeout >= 0.0, case_file, "coupling.timeout",
+      "must be a finite number of seconds, not negative, got " + sph::format_number(timeout));
+  return timeout > 0.0 ? timeout : kDefaultTimeoutSeconds;
+}
+
+}  // namespace cosph::coupling
