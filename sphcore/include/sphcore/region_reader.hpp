@@ -1,0 +1,26 @@
+// A case's regions (proto/case.proto Region) as shapes (sphcore/shape.hpp),
+// checked: a bad outline is refused naming the file, the field and the reason.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "case.pb.h"
+#include "sphcore/case_file.hpp"
+#include "sphcore/shape.hpp"
+
+namespace sph {
+
+// The shape of `region`, the case's field `field` (e.g. "fluid.walls[2]").
+// Throws ConfigError for a region with no outline or more than one, a polygon
+// with a defect (polygon_defect), a radius that is not positive, a box whose
+// max is not above its min, or an outline file that is missing or malformed
+// (its path and line in the message).
+Shape read_region(const cosph::config::Region& region, const CaseFile& case_file,
+                  const std::string& field);
+
+// The vertices of an outline file: "x,y" per line, "#" comments and blank
+// lines skipped. Throws ConfigError naming the file and line.
+std::vector<Vec2> read_outline(const std::string& path);
+
+}  // namespace sph
