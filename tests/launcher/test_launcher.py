@@ -46,6 +46,7 @@ class LauncherTest(unittest.TestCase):
         repo = self.tmp / "repo"
         (repo / "coupler").mkdir(parents=True)
         shutil.copy2(SCRIPT, repo / "coupler" / "cosph")
+        shutil.copytree(SCRIPT.parent / "cosph_launcher", repo / "coupler" / "cosph_launcher")
         self.script = repo / "coupler" / "cosph"
         cases = repo / "cases"
         cases.mkdir()

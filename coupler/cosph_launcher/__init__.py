@@ -1,0 +1,1 @@
+"""The cosph launcher: runs a case's processes (see coupler/cosph)."""

@@ -1,0 +1,134 @@
+"""The command line: `cosph run CASE --out DIR`."""
+
+import argparse
+import os
+import sys
+import time
+from pathlib import Path
+
+from .console import Console, emit, fmt_duration, fmt_size
+from .errors import EXIT_BAD_INPUT, EXIT_INTERRUPTED, EXIT_OK, Exit, Interrupted, UsageError
+from .locate import (BUILD_HINT, available_cases, bin_dir, check_sets, find_exe, repo_dir,
+                     resolve_case)
+from .output_dir import prepare_out_dir
+from .plan import check_endpoint, child_commands, core_placement, default_endpoint, run_plan
+from .supervise import Child, Run, SignalState
+
+def print_summary(out, wall_s, children):
+    sim = [c.progress.t for c in children if c.progress.t is not None]
+    line = f"cosph: finished in {fmt_duration(wall_s)} wall time"
+    if sim:
+        line += f", simulated {min(sim):.4g} s"
+    files = [out / "timeseries.csv"] if (out / "timeseries.csv").is_file() else []
+    files += sorted(p for p in out.glob("*.xdmf") if p.is_file())
+    lines = [line]
+    cpu = [f"{c.tag} {fmt_duration(c.cpu_s)}" for c in children if c.cpu_s is not None]
+    if cpu:
+        lines.append("cosph: CPU time: " + ", ".join(cpu))
+    lines.append(f"cosph: output in {out}:")
+    lines += [f"  {p.name}  ({fmt_size(p.stat().st_size)})" for p in files]
+    if not files:
+        lines.append("  (no timeseries.csv or *.xdmf files were written)")
+    emit(sys.stdout, "\n".join(lines) + "\n")
+
+
+# --------------------------------------------------------------------------
+# Command line
+
+def build_parser(repo):
+    parser = argparse.ArgumentParser(
+        prog="cosph",
+        description="Run SPH fluid-structure-interaction cases: starts the "
+                    "fluid solver, the solid solver and the coupler as the case needs.",
+        epilog="Run 'cosph run --help' for the options of a run.")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    cases = available_cases(repo / "cases")
+    run = sub.add_parser(
+        "run", help="run a case",
+        description="Run a case and write its results to an output folder.",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        epilog="available cases: " + (", ".join(cases) if cases else "(none found)") +
+               f"\n\nExecutables are taken from $COSPH_BIN, else {repo / 'build' / 'bin'}."
+               f"\nBuild them with:  {BUILD_HINT}"
+               "\n\nexit codes: 0 success, 2 bad input, 130 interrupted, "
+               "otherwise the failed process's code")
+    run.add_argument("case", metavar="CASE",
+                     help="case file, or the name of a case in cases/ (e.g. dam_break)")
+    run.add_argument("--out", required=True, metavar="DIR",
+                     help="output folder (created if needed)")
+    run.add_argument("--set", action="append", default=[], metavar="FIELD=VALUE",
+                     help="override a case field; may be repeated")
+    run.add_argument("--endpoint", metavar="E",
+                     help="coupling endpoint for multi-process runs "
+                          "(default ipc://DIR/coupler.sock)")
+    run.add_argument("--quiet", action="store_true", help="show no progress")
+    run.add_argument("--no-pin", action="store_true",
+                     help="in a multi-rate run, let the scheduler place the solvers "
+                          "instead of giving each cores of its own")
+    return parser
+
+
+def cmd_run(args, repo, signals):
+    check_sets(args.set)
+    case = resolve_case(args.case, repo)
+    folder = bin_dir(repo)
+    plan_cmd, names, separate_cores = run_plan(find_exe(folder, "cosph-case"), case, args.set)
+    for name in names:
+        find_exe(folder, name)
+
+    out = Path(os.path.abspath(os.path.expanduser(args.out)))
+    endpoint = args.endpoint or default_endpoint(out)
+    if len(names) > 1:
+        check_endpoint(endpoint)
+    elif args.endpoint:
+        emit(sys.stderr, f"cosph: note: --endpoint is not used, {names[0]} runs alone\n")
+    commands = child_commands(names, folder, case, out, args.set, endpoint)
+    placement = {} if args.no_pin else core_placement(names, separate_cores,
+                                                      os.sched_getaffinity(0))
+    prepare_out_dir(out, case, plan_cmd, commands, [placement.get(n) for n in names])
+
+    mode = "quiet" if args.quiet else ("tty" if sys.stderr.isatty() else "plain")
+    console = Console(mode)
+    children = [Child(n, c) for n, c in zip(names, commands)]
+    for child, name in zip(children, names):
+        child.cores = placement.get(name)
+    if placement:
+        console.line(sys.stderr, "cosph: multi-rate run: " + ", ".join(
+            f"{child.name} on core{'s' if len(child.cores) > 1 else ''} "
+            f"{','.join(map(str, child.cores))}" for child in children if child.cores) +
+            " (--no-pin: let the scheduler place them)")
+    run = Run(children, console, signals)
+    started = time.monotonic()
+    signals.raise_now = False   # from here on, signals are handled by run.supervise()
+    try:
+        run.start()
+        code = run.supervise()
+    finally:
+        run.kill_remaining()   # a no-op normally; a safety net if the launcher has a bug
+        console.finish()
+    if code == EXIT_OK:
+        print_summary(out, time.monotonic() - started, run.children)
+    return code
+
+
+def main(argv):
+    for stream in (sys.stdout, sys.stderr):
+        stream.reconfigure(errors="replace")   # never die on a solver's odd bytes
+    signals = SignalState()
+    signals.install()
+    repo = repo_dir()
+    try:
+        parser = build_parser(repo)
+        args = parser.parse_args(argv)
+        if args.command != "run":
+            parser.print_help(sys.stderr)
+            return EXIT_BAD_INPUT
+        return cmd_run(args, repo, signals)
+    except UsageError as err:
+        emit(sys.stderr, f"cosph: {err}\n")
+        return EXIT_BAD_INPUT
+    except Exit as exit_:
+        return exit_.code
+    except Interrupted:
+        emit(sys.stderr, "cosph: interrupted\n")
+        return EXIT_INTERRUPTED
