@@ -51,6 +51,7 @@ class SnapshotSeriesChecks:
     def test_times_follow_the_snapshot_files(self):
         with TimeSeriesReader(self.index) as reader:
             self.assertEqual(reader.num_steps, len(self.files))
+            reader.read_points_cells()
             times = [reader.read_data(k)[0] for k in range(reader.num_steps)]
         expected = [self.read_h5(path)[0] for path in self.files]
         np.testing.assert_allclose(times, expected, rtol=1e-11, atol=1e-15)
@@ -89,12 +90,11 @@ class SnapshotSeriesChecks:
                 self.assertEqual(len(np.unique(point_data["id"])), len(point_data["id"]))
 
     def test_index_declares_each_datasets_type(self):
-        """ParaView's readers convert to the declared type, not the stored one."""
+        # ParaView's readers convert to the declared type, not the stored one.
         root = ET.parse(self.index).getroot()
         self.assertEqual(root.get("Version"), "3.0")
-        items = root.iter("DataItem")
         checked = 0
-        for item in items:
+        for item in root.iter("DataItem"):
             path, dataset = item.text.strip().split(":")
             with h5py.File(os.path.join(self.out, path), "r") as f:
                 stored = f[dataset]
