@@ -8,7 +8,7 @@ packages=(
   libzmq3-dev cppzmq-dev
   libprotobuf-dev protobuf-compiler
   libeigen3-dev libhdf5-dev libgtest-dev
-  python3-numpy python3-matplotlib python3-h5py
+  python3-numpy python3-matplotlib python3-h5py python3-meshio
 )
 
 missing=()

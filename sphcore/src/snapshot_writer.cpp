@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <numeric>
 #include <stdexcept>
 
 namespace sph {
@@ -18,14 +19,14 @@ void Snapshot::add_scalar(const std::string& name, std::span<const double> value
 }
 
 void Snapshot::add_scalar(const std::string& name, std::span<const int> values) {
-  fields_.push_back({name, 1, std::vector<double>(values.begin(), values.end())});
+  fields_.push_back({name, 1, std::vector<std::int32_t>(values.begin(), values.end())});
 }
 
 void Snapshot::add_vector(const std::string& name, std::span<const Vec2> values) {
-  Field field{name, 3, {}};
-  field.data.reserve(3 * values.size());
-  for (const Vec2& v : values) field.data.insert(field.data.end(), {v.x(), v.y(), 0.0});
-  fields_.push_back(std::move(field));
+  std::vector<double> data;
+  data.reserve(3 * values.size());
+  for (const Vec2& v : values) data.insert(data.end(), {v.x(), v.y(), 0.0});
+  fields_.push_back({name, 3, std::move(data)});
 }
 
 SnapshotWriter::SnapshotWriter(std::string out_dir, std::string name)
@@ -38,7 +39,7 @@ std::string SnapshotWriter::write(const Snapshot& snapshot, double time) {
   write_file(snapshot, time, out_dir_ + "/" + file);
   Entry entry{file, time, snapshot.size(), {}};
   for (const auto& field : snapshot.fields())
-    entry.fields.emplace_back(field.name, field.components);
+    entry.fields.push_back({field.name, field.components, field.is_integer()});
   entries_.push_back(std::move(entry));
   write_index();
   return out_dir_ + "/" + file;
@@ -53,17 +54,41 @@ std::string SnapshotWriter::write_extra(const Snapshot& snapshot, double time,
 
 namespace {
 
-void write_dataset(hid_t file, const std::string& name, const std::vector<double>& data,
-                   std::size_t rows, int components, const std::string& path) {
+// A dataset of `rows` x `components` values (rank 1 when rank is 1), stored
+// as `stored` and read from memory as `in_memory`.
+void write_dataset(hid_t file, const std::string& name, const void* data, hid_t stored,
+                   hid_t in_memory, std::size_t rows, int components, int rank,
+                   const std::string& path) {
   const hsize_t dims[2] = {rows, static_cast<hsize_t>(components)};
-  const hid_t space = H5Screate_simple(components == 1 ? 1 : 2, dims, nullptr);
+  const hid_t space = H5Screate_simple(rank, dims, nullptr);
   const hid_t set =
-      H5Dcreate2(file, name.c_str(), H5T_IEEE_F64LE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      H5Dcreate2(file, name.c_str(), stored, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
   const herr_t status =
-      set < 0 ? -1 : H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, data.data());
+      set < 0 ? -1 : H5Dwrite(set, in_memory, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
   if (set >= 0) H5Dclose(set);
   H5Sclose(space);
   if (status < 0) throw std::runtime_error(path + ": cannot write dataset " + name);
+}
+
+void write_dataset(hid_t file, const std::string& name, const std::vector<double>& data,
+                   std::size_t rows, int components, const std::string& path) {
+  write_dataset(file, name, data.data(), H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, rows, components,
+                components == 1 ? 1 : 2, path);
+}
+
+void write_dataset(hid_t file, const std::string& name, const std::vector<std::int32_t>& data,
+                   std::size_t rows, int components, const std::string& path) {
+  write_dataset(file, name, data.data(), H5T_STD_I32LE, H5T_NATIVE_INT32, rows, components,
+                components == 1 ? 1 : 2, path);
+}
+
+// Element k of the Polyvertex topology is particle k alone. N x 1, as the
+// readers expect connectivity to be elements x nodes per element.
+void write_connectivity(hid_t file, std::size_t size, const std::string& path) {
+  std::vector<std::int32_t> nodes(size);
+  std::iota(nodes.begin(), nodes.end(), 0);
+  write_dataset(file, "/connectivity", nodes.data(), H5T_STD_I32LE, H5T_NATIVE_INT32, size, 1, 2,
+                path);
 }
 
 }  // namespace
@@ -76,8 +101,13 @@ void SnapshotWriter::write_file(const Snapshot& snapshot, double time,
   if (file < 0) throw std::runtime_error(partial + ": cannot create HDF5 file");
   try {
     write_dataset(file, "/position", snapshot.positions(), snapshot.size(), 3, path);
+    write_connectivity(file, snapshot.size(), path);
     for (const auto& field : snapshot.fields())
-      write_dataset(file, "/" + field.name, field.data, snapshot.size(), field.components, path);
+      std::visit(
+          [&](const auto& data) {
+            write_dataset(file, "/" + field.name, data, snapshot.size(), field.components, path);
+          },
+          field.data);
     const hid_t scalar = H5Screate(H5S_SCALAR);
     const hid_t attribute =
         H5Acreate2(file, "time", H5T_IEEE_F64LE, scalar, H5P_DEFAULT, H5P_DEFAULT);
@@ -98,27 +128,32 @@ void SnapshotWriter::write_index() const {
   {
     std::ofstream out(partial);
     out.precision(12);
-    out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"2.0\">\n <Domain>\n"
+    out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
         << "  <Grid Name=\"" << name_
         << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
     for (const Entry& e : entries_) {
-      auto item = [&](const std::string& dataset, int components) {
+      // Dimensions as the dataset's shape; rank 2 when `columns` is given.
+      auto item = [&](const std::string& dataset, int columns, bool is_integer) {
         out << "      <DataItem Dimensions=\"" << e.size;
-        if (components > 1) out << " " << components;
-        out << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << e.file << ":/"
-            << dataset << "</DataItem>\n";
+        if (columns > 0) out << " " << columns;
+        out << (is_integer ? "\" NumberType=\"Int\" Precision=\"4\""
+                           : "\" NumberType=\"Float\" Precision=\"8\"")
+            << " Format=\"HDF\">" << e.file << ":/" << dataset << "</DataItem>\n";
       };
       out << "   <Grid Name=\"" << name_ << "\" GridType=\"Uniform\">\n"
           << "    <Time Value=\"" << e.time << "\"/>\n"
           << "    <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << e.size
-          << "\" NodesPerElement=\"1\"/>\n"
+          << "\" NodesPerElement=\"1\">\n";
+      item("connectivity", 1, true);
+      out << "    </Topology>\n"
           << "    <Geometry GeometryType=\"XYZ\">\n";
-      item("position", 3);
+      item("position", 3, false);
       out << "    </Geometry>\n";
-      for (const auto& [field, components] : e.fields) {
-        out << "    <Attribute Name=\"" << field << "\" AttributeType=\""
-            << (components == 1 ? "Scalar" : "Vector") << "\" Center=\"Node\">\n";
-        item(field, components);
+      for (const FieldLayout& field : e.fields) {
+        const bool scalar = field.components == 1;
+        out << "    <Attribute Name=\"" << field.name << "\" AttributeType=\""
+            << (scalar ? "Scalar" : "Vector") << "\" Center=\"Node\">\n";
+        item(field.name, scalar ? 0 : field.components, field.is_integer);
         out << "    </Attribute>\n";
       }
       out << "   </Grid>\n";

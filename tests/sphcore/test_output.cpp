@@ -74,6 +74,17 @@ std::vector<double> read_dataset(hid_t file, const std::string& name, std::vecto
   return data;
 }
 
+// The stored type of a dataset: its class (H5T_INTEGER, H5T_FLOAT) and size in bytes.
+std::pair<H5T_class_t, std::size_t> stored_type(hid_t file, const std::string& name) {
+  const hid_t set = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+  if (set < 0) throw std::runtime_error("no dataset " + name);
+  const hid_t type = H5Dget_type(set);
+  const std::pair<H5T_class_t, std::size_t> result{H5Tget_class(type), H5Tget_size(type)};
+  H5Tclose(type);
+  H5Dclose(set);
+  return result;
+}
+
 double read_time(hid_t file) {
   const hid_t attribute = H5Aopen(file, "time", H5P_DEFAULT);
   double time = -1.0;
@@ -110,12 +121,35 @@ TEST(SnapshotWriter, WritesHdf5ThatReadsBack) {
   EXPECT_EQ(read_dataset(file, "/density", dims), density);
   EXPECT_EQ(dims, (std::vector<hsize_t>{3}));
   EXPECT_EQ(read_dataset(file, "/id", dims), (std::vector<double>{7.0, 8.0, 9.0}));
+  // Integer fields stay integers (int32), real ones float64.
+  EXPECT_EQ(stored_type(file, "/id"), std::make_pair(H5T_INTEGER, std::size_t{4}));
+  EXPECT_EQ(stored_type(file, "/density"), std::make_pair(H5T_FLOAT, std::size_t{8}));
+  // One Polyvertex element per particle: element k is particle k.
+  EXPECT_EQ(read_dataset(file, "/connectivity", dims), (std::vector<double>{0.0, 1.0, 2.0}));
+  EXPECT_EQ(dims, (std::vector<hsize_t>{3, 1}));
+  EXPECT_EQ(stored_type(file, "/connectivity"), std::make_pair(H5T_INTEGER, std::size_t{4}));
   const std::vector<double> v = read_dataset(file, "/velocity", dims);
   EXPECT_EQ(dims, (std::vector<hsize_t>{3, 3}));
   EXPECT_EQ(v[3 * 2], -3.0);
   EXPECT_EQ(v[3 * 2 + 1], 0.5);
   EXPECT_EQ(read_time(file), 0.125);
   H5Fclose(file);
+
+  // The index declares what each dataset holds (the Xdmf3 readers convert to
+  // the declared type) and reads the topology from /connectivity.
+  const std::string index = read_text(dir.file("fluid.xdmf"));
+  EXPECT_NE(index.find("<DataItem Dimensions=\"3\" NumberType=\"Int\" Precision=\"4\" "
+                       "Format=\"HDF\">fluid_000000.h5:/id<"),
+            std::string::npos)
+      << index;
+  EXPECT_NE(index.find("<DataItem Dimensions=\"3\" NumberType=\"Float\" Precision=\"8\" "
+                       "Format=\"HDF\">fluid_000000.h5:/density<"),
+            std::string::npos)
+      << index;
+  EXPECT_NE(index.find("<DataItem Dimensions=\"3 1\" NumberType=\"Int\" Precision=\"4\" "
+                       "Format=\"HDF\">fluid_000000.h5:/connectivity<"),
+            std::string::npos)
+      << index;
 }
 
 TEST(SnapshotWriter, XdmfIndexReferencesEverySnapshot) {
@@ -136,12 +170,14 @@ TEST(SnapshotWriter, XdmfIndexReferencesEverySnapshot) {
   EXPECT_TRUE(std::filesystem::exists(extra));
 
   const std::string index = read_text(dir.file("fluid.xdmf"));
-  EXPECT_NE(index.find("<Xdmf"), std::string::npos);
+  // Version 3: meshio's reader refuses 2.x; ParaView's three readers take it.
+  EXPECT_NE(index.find("<Xdmf Version=\"3.0\">"), std::string::npos);
   for (int k = 0; k < 3; ++k) {
     const std::string name = std::filesystem::path(files[k]).filename().string();
     EXPECT_EQ(name, "fluid_00000" + std::to_string(k) + ".h5");
     EXPECT_NE(index.find(name + ":/position"), std::string::npos) << name;
     EXPECT_NE(index.find(name + ":/pressure"), std::string::npos) << name;
+    EXPECT_NE(index.find(name + ":/connectivity"), std::string::npos) << name;
     // Each grid gives its own particle count.
     EXPECT_NE(index.find("NumberOfElements=\"" + std::to_string(k + 2) + "\""), std::string::npos);
   }

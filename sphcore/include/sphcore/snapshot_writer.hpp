@@ -1,14 +1,20 @@
 // HDF5 particle snapshots with an XDMF index, so that ParaView opens a run as
-// a time series (File > Open > NAME.xdmf, "Xdmf Reader").
+// a time series (File > Open > NAME.xdmf; docs/paraview.md).
 //
-// Each snapshot is one file DIR/NAME_NNNNNN.h5 holding /position (N x 3, z = 0)
-// and one dataset per field. It is written to a temporary name and renamed, and
-// the XDMF index is rewritten after each, so a run that dies keeps a readable
-// record of every snapshot it finished.
+// Each snapshot is one file DIR/NAME_NNNNNN.h5 holding /position (N x 3, z = 0),
+// /connectivity (N x 1 int32, 0..N-1) and one dataset per field: float64 for
+// real fields, int32 for integer ones (ids, kind codes, flags). The index
+// gives every snapshot a Polyvertex topology of N one-node elements read from
+// /connectivity: the Xdmf3 readers (ParaView's default) and meshio make one
+// vertex cell per particle from it, and none without it. Each file is written
+// to a temporary name and renamed, and the XDMF index is rewritten after each,
+// so a run that dies keeps a readable record of every snapshot it finished.
 #pragma once
 
+#include <cstdint>
 #include <span>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "sphcore/types.hpp"
@@ -25,8 +31,10 @@ class Snapshot {
 
   struct Field {
     std::string name;
-    int components;            // 1 or 3
-    std::vector<double> data;  // size N * components
+    int components;  // 1 or 3
+    // Size N * components; integer fields are scalars.
+    std::variant<std::vector<double>, std::vector<std::int32_t>> data;
+    bool is_integer() const { return data.index() == 1; }
   };
   std::size_t size() const { return size_; }
   const std::vector<double>& positions() const { return positions_; }
@@ -50,11 +58,16 @@ class SnapshotWriter {
   std::string write_extra(const Snapshot& snapshot, double time, const std::string& label);
 
  private:
+  struct FieldLayout {
+    std::string name;
+    int components;
+    bool is_integer;
+  };
   struct Entry {
     std::string file;
     double time;
     std::size_t size;
-    std::vector<std::pair<std::string, int>> fields;
+    std::vector<FieldLayout> fields;
   };
   void write_file(const Snapshot& snapshot, double time, const std::string& path) const;
   void write_index() const;
