@@ -365,13 +365,17 @@ class Canvas:
                                                else np.zeros(len(xy)))
             ax.scatter(xy[:, 0], xy[:, 1], s=area, c=colours, cmap=mappable.cmap,
                        norm=mappable.norm, lw=0)
+            clamped = scene.solid["clamped"] > 0 if "clamped" in scene.solid else None
+            if clamped is not None and clamped.any():
+                handles.append(ax.scatter(xy[clamped, 0], xy[clamped, 1], s=area / 6, c="0.85",
+                                          marker="o", lw=0, label="clamped"))
             failed = scene.solid["failed"] > 0 if "failed" in scene.solid else None
             if failed is not None and failed.any():
                 handles.append(ax.scatter(xy[failed, 0], xy[failed, 1], s=max(area, 9.0),
                                           marker="x", c="red", lw=0.8,
                                           label=f"failed ({int(failed.sum())})"))
         if handles:
-            ax.legend(handles=handles, loc="upper right", fontsize=8)
+            ax.legend(handles=handles, loc="best", fontsize=8)
         note = f", {scene.frame.note}" if scene.frame.note else ""
         ax.set_title(f"{self.title}\nt = {scene.frame.time:.4f} s{note}", fontsize=10)
 
