@@ -252,6 +252,12 @@ class Scene:
             return self.fluid["kind"] == 0
         return self.np.ones(len(self.fluid["position"]), dtype=bool)
 
+    def free(self):
+        """Which solid particles are free (not held by a clamp)."""
+        if "clamped" in self.solid:
+            return self.solid["clamped"] == 0
+        return self.np.ones(len(self.solid["position"]), dtype=bool)
+
     def positions(self):
         return [d["position"][:, :2] for d in (self.fluid, self.solid) if d is not None]
 
@@ -285,7 +291,7 @@ class Look:
                      if s.fluid is not None and "pressure" in s.fluid]
         pressures = np.concatenate(pressures) if pressures else np.zeros(0)
         self.pressure = colour_range(np, pressures, floor=None)
-        stresses = [s.stress for s in scenes if s.stress is not None]
+        stresses = [s.stress[s.free()] for s in scenes if s.stress is not None]
         self.stress = colour_range(np, np.concatenate(stresses) if stresses else np.zeros(0),
                                    floor=0.0)
 
@@ -358,26 +364,31 @@ class Canvas:
             ax.scatter(xy[water, 0], xy[water, 1], s=area, c=pressure,
                        cmap=mappable.cmap, norm=mappable.norm, lw=0)
         if scene.solid is not None:
-            xy = scene.solid["position"]
+            xy, free = scene.solid["position"], scene.free()
             area = self.marker_area(look.spacing.get("solid"))
             mappable = self.mappables["solid"]
             colours = self.factors["solid"] * (scene.stress if scene.stress is not None
                                                else np.zeros(len(xy)))
-            ax.scatter(xy[:, 0], xy[:, 1], s=area, c=colours, cmap=mappable.cmap,
+            ax.scatter(xy[free, 0], xy[free, 1], s=area, c=colours[free], cmap=mappable.cmap,
                        norm=mappable.norm, lw=0)
-            clamped = scene.solid["clamped"] > 0 if "clamped" in scene.solid else None
-            if clamped is not None and clamped.any():
-                handles.append(ax.scatter(xy[clamped, 0], xy[clamped, 1], s=area / 6, c="0.85",
-                                          marker="o", lw=0, label="clamped"))
+            if not free.all():
+                ax.scatter(xy[~free, 0], xy[~free, 1], s=area, c="0.35", lw=0)
+                handles.append(legend_marker("s", "0.35", "solid, clamped"))
             failed = scene.solid["failed"] > 0 if "failed" in scene.solid else None
             if failed is not None and failed.any():
-                handles.append(ax.scatter(xy[failed, 0], xy[failed, 1], s=max(area, 9.0),
-                                          marker="x", c="red", lw=0.8,
-                                          label=f"failed ({int(failed.sum())})"))
+                ax.scatter(xy[failed, 0], xy[failed, 1], s=max(area, 9.0), marker="x", c="red",
+                           lw=0.8)
+                handles.append(legend_marker("x", "red", f"solid, failed ({int(failed.sum())})"))
         if handles:
             ax.legend(handles=handles, loc="best", fontsize=8)
         note = f", {scene.frame.note}" if scene.frame.note else ""
         ax.set_title(f"{self.title}\nt = {scene.frame.time:.4f} s{note}", fontsize=10)
+
+
+def legend_marker(marker, colour, label):
+    """A legend entry of readable size, however small the particles are drawn."""
+    from matplotlib.lines import Line2D
+    return Line2D([], [], marker=marker, ls="", color=colour, ms=6, label=label)
 
 
 def colour_bars(look, scenes):
