@@ -73,7 +73,7 @@ class PlotOfCoupledRun(PictureChecks):
     def setUpClass(cls):
         cls.tmp = Path(tempfile.mkdtemp(prefix="cosph_plot_"))
         cls.out = cls.tmp / "run"
-        cls.run = run_case("elastic_plate", cls.out, "run.end_time=0.004",
+        cls.run_result = run_case("elastic_plate", cls.out, "run.end_time=0.004",
                            "run.snapshot_interval=0.001", "run.output_interval=0.0005")
 
     @classmethod
@@ -81,7 +81,8 @@ class PlotOfCoupledRun(PictureChecks):
         shutil.rmtree(cls.tmp, ignore_errors=True)
 
     def setUp(self):
-        self.assertEqual(self.run.returncode, 0, self.run.stdout + self.run.stderr)
+        result = self.run_result
+        self.assertEqual(result.returncode, 0, result.stdout + result.stderr)
 
     def test_writes_gauges_and_four_snapshots_spread_over_the_run(self):
         result = launcher("plot", self.out)
