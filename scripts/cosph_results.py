@@ -13,7 +13,7 @@ import time
 import numpy as np
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-REFERENCE = os.path.join(os.path.dirname(REPO), "shared", "reference")
+REFERENCE = os.path.join(REPO, "validation", "reference")
 FIGURES = os.path.join(REPO, "docs", "figures")
 RESULTS = os.path.join(REPO, "docs", "results")
 

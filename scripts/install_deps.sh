@@ -9,6 +9,7 @@ packages=(
   libprotobuf-dev protobuf-compiler
   libeigen3-dev libhdf5-dev libgtest-dev
   python3-numpy python3-matplotlib python3-h5py python3-meshio
+  python3-pil  # coupler/cosph plot --movie writes a GIF with it when ffmpeg is absent
 )
 
 missing=()

@@ -13,3 +13,5 @@ cmake --build --preset release -j2
 echo "quickstart: running the coupled elastic plate (cases/elastic_plate.pbtxt) to t = 0.4 s"
 coupler/cosph run elastic_plate --out out/quickstart
 echo "quickstart: open out/quickstart/fluid.xdmf and solid.xdmf in ParaView; tip displacement and water level are in out/quickstart/timeseries.csv"
+echo "quickstart: drawing the run (coupler/cosph plot out/quickstart):"
+coupler/cosph plot out/quickstart

@@ -7,7 +7,7 @@ import time
 from pathlib import Path
 
 from .console import Console, emit, fmt_duration, fmt_size
-from .errors import EXIT_BAD_INPUT, EXIT_INTERRUPTED, EXIT_OK, Exit, Interrupted, UsageError
+from .errors import EXIT_BAD_INPUT, EXIT_FAILURE, EXIT_INTERRUPTED, EXIT_OK, Exit, Interrupted, UsageError
 from .locate import (BUILD_HINT, available_cases, bin_dir, check_sets, find_exe, repo_dir,
                      resolve_case)
 from .output_dir import prepare_out_dir
@@ -40,7 +40,8 @@ def build_parser(repo):
         prog="cosph",
         description="Run SPH fluid-structure-interaction cases: starts the "
                     "fluid solver, the solid solver and the coupler as the case needs.",
-        epilog="Run 'cosph run --help' for the options of a run.")
+        epilog="Run 'cosph run --help' for the options of a run, "
+               "'cosph plot --help' for the pictures of one.")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND")
     cases = available_cases(repo / "cases")
     run = sub.add_parser(
@@ -65,7 +66,52 @@ def build_parser(repo):
     run.add_argument("--no-pin", action="store_true",
                      help="in a multi-rate run, let the scheduler place the solvers "
                           "instead of giving each cores of its own")
+    add_plot_parser(sub)
     return parser
+
+
+def add_plot_parser(sub):
+    plot = sub.add_parser(
+        "plot", help="draw the pictures of a run",
+        description="Draw PNGs of an output folder, finished, still running or blown up: "
+                    "the gauges of timeseries.csv against time (one figure per physical "
+                    "group, over the published curves the case names in its 'reference' "
+                    "fields), and the particles of chosen snapshots (water by pressure, "
+                    "walls grey, solid by von Mises stress, failed particles marked), with "
+                    "the last good state of a run that blew up.",
+        formatter_class=argparse.RawDescriptionHelpFormatter,
+        epilog="Needs numpy, h5py and matplotlib (Debian: python3-numpy python3-h5py "
+               "python3-matplotlib).\n--movie writes an MP4 with ffmpeg if it is installed "
+               "(Debian: ffmpeg), else a GIF\nwith Pillow (Debian: python3-pil); Debian 12 "
+               "has both packages.\n\nexit codes: 0 success, 2 not an output folder, a missing "
+               "package or bad input,\n1 a file that could not be read or written")
+    plot.add_argument("dir", metavar="DIR", help="output folder of a run (its --out)")
+    plot.add_argument("--into", metavar="FOLDER",
+                      help="where to write the pictures (default DIR/plots, created if needed)")
+    plot.add_argument("--times", metavar="T1,T2,...",
+                      help="draw the snapshots nearest these times [s] (default: four, "
+                           "evenly spread over those written)")
+    plot.add_argument("--movie", action="store_true",
+                      help="also an animation of every snapshot (movie.mp4 or movie.gif)")
+
+
+def cmd_plot(args):
+    """Imports the plotting module only now: running cases needs none of it."""
+    from . import cosph_output, cosph_plot
+    try:
+        times = cosph_plot.parse_times(args.times) if args.times is not None else None
+        written = cosph_plot.plot_run(Path(os.path.abspath(os.path.expanduser(args.dir))),
+                                      into=args.into, times=times, movie=args.movie,
+                                      repo=repo_dir())
+    except (cosph_output.OutputError, cosph_plot.PlotError) as err:
+        raise UsageError(str(err)) from err
+    except OSError as err:   # a file that h5py or the PNG writer could not handle
+        emit(sys.stderr, f"cosph: {err}\n")
+        return EXIT_FAILURE
+    if not written:
+        emit(sys.stdout, f"cosph: nothing to draw yet in {args.dir}\n")
+    emit(sys.stdout, "".join(f"{path}\n" for path in written))
+    return EXIT_OK
 
 
 def cmd_run(args, repo, signals):
@@ -120,6 +166,8 @@ def main(argv):
     try:
         parser = build_parser(repo)
         args = parser.parse_args(argv)
+        if args.command == "plot":
+            return cmd_plot(args)
         if args.command != "run":
             parser.print_help(sys.stderr)
             return EXIT_BAD_INPUT
