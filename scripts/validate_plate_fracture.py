@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plate fracture (SPEC.md scene 3): the elastic plate broken by the water.
+"""Plate fracture (the study's scene 3): the elastic plate broken by the water.
 
 Runs, through the launcher:
   1. the calibration: cases/plate_fracture.pbtxt with fracture off, to
@@ -199,7 +199,7 @@ def main():
     if "sync" in results:
         draw_snapshots(results["sync"][1], os.path.join(cr.FIGURES, "plate_fracture_snapshots.png"))
 
-    preamble.insert(0, "Plate fracture (SPEC.md scene 3), by `scripts/validate_plate_fracture.py`: "
+    preamble.insert(0, "Plate fracture (the study's scene 3), by `scripts/validate_plate_fracture.py`: "
                     "`cases/plate_fracture.pbtxt`, water 2 mm, plate 1 mm, band 0.069 <= y <= "
                     "0.079 m at E = 0.12e6 Pa. 'free' is the first snapshot (every 10 ms) at which "
                     "no intact particle of the lower plate is within 2h of an intact clamped one. "

@@ -31,11 +31,11 @@ CrossPhaseParameters read_cross_phase_parameters(const sph::CaseFile& case_file)
   par.model = name == "stress_sum" ? InterfaceModel::stress_sum : InterfaceModel::moving_wall;
   par.gravity = sph::read_run_parameters(case_file).gravity;
   if (par.model == InterfaceModel::stress_sum) {
-    // Damped as solid pairs are (SPEC.md: A ~ 1 for a solid): c_ij there is
-    // mostly the solid's sound speed. Damped as water (A = 0.02), the
-    // interface let water at negative pressure clump into the bending plate
-    // within 5 ms; with the mean of the two phases' coefficients the elastic
-    // plate still blew up at t = 0.086 s.
+    // Damped as solid pairs are (docs/physics.md, "Artificial viscosity"):
+    // c_ij there is mostly the solid's sound speed. Damped as water, the
+    // interface let water at negative pressure clump into the bending plate;
+    // with the mean of the two phases' coefficients the elastic plate still
+    // blew up.
     const auto& solid = case_file.config.solid();
     par.A = first_positive(coupling.artificial_viscosity(), solid.artificial_viscosity(), 1.0);
     par.B = first_positive(coupling.artificial_viscosity_quadratic(),
