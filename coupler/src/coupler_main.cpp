@@ -53,7 +53,7 @@ CrossPhaseParameters read_cross_phase_parameters(const sph::CaseFile& case_file)
 int run(int argc, char** argv) {
   const sph::SolverArgs args = sph::parse_solver_args(
       argc, argv, "cosph-coupler",
-      "Couples cosph-fluid and a solid solver over ZeroMQ (SPEC.md \"the coupling rule\").");
+      "Couples cosph-fluid and a solid solver over ZeroMQ (docs/physics.md, \"Coupling\").");
   const sph::CaseFile case_file = sph::load_case(args.case_path, args.overrides);
   sph::require(case_file.config.has_fluid() && case_file.config.has_solid(), case_file,
                "fluid, solid", "a coupled case needs both");
