@@ -293,8 +293,8 @@ def main():
         "own checks and reported in their words.",
         "",
         "**Step size.** A sweep stops at its first failure. The force limit "
-        "0.25 sqrt(h/|a|) (physics.md, \"Time step\") still applies, so the step taken (median dt) can stop "
-        "growing with the CFL number; in multi-rate runs the solid's sub-steps obey the same "
+        "0.25 sqrt(h/|a|) of docs/physics.md (\"Time step\") still applies, so the step taken "
+        "(median dt) can stop growing with the CFL number; in multi-rate runs the solid's sub-steps obey the same "
         "limits. The last row is the coupled plate with the solid made to take the step the "
         "water takes at CFL 0.25 whole (`coupling.solid_step: \"fluid\"`, a stability test, "
         "not a way to run): the solid's own step check stops the run within a few steps, and "

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Dam break (SPEC.md scene 1) against Martin & Moyce 1952 and Koshizuka & Oka 1996.
+"""Dam break (the study's scene 1) against Martin & Moyce 1952 and Koshizuka & Oka 1996.
 
 Runs cases/dam_break.pbtxt at three spacings, measures the RMS relative error
 of the surge front z/a over the experimental points with T = t sqrt(2g/a) <= 3.1,

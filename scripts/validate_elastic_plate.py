@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Elastic plate (SPEC.md scene 2) against Antoci et al. 2007 and three published codes.
+"""Elastic plate (the study's scene 2) against Antoci et al. 2007 and three published codes.
 
 Runs cases/elastic_plate.pbtxt through the launcher (three processes) in the
 configurations of RUNS (the case as it is; multi-rate coupling at three
@@ -37,7 +37,7 @@ RUNS = [("synchronised steps (the case)", "sync", []),
          MULTIRATE + ["fluid.spacing=0.0015", "solid.spacing=0.00083333333333333"]),
         ("total-Lagrangian solid, multi-rate", "tl_multirate",
          MULTIRATE + ["solid.model=total_lagrangian"]),
-        # SPEC.md's C_cfl is 0.2-0.3; the cases take 0.25. What the upper end
+        # The usual C_cfl is 0.2-0.3 (docs/physics.md, "Time step"); the cases take 0.25. What the upper end
         # buys, as an option on the chart: the defaults stay as they are.
         ("multi-rate, run.cfl 0.3", "multirate_cfl03", MULTIRATE + ["run.cfl=0.3"]),
         ("study's interface rule (stress_sum)", "stress_sum", ["coupling.interface=stress_sum"])]

@@ -5,7 +5,7 @@ against thin-plate theory at three resolutions.
 Runs cases/oscillating_plate.pbtxt through build/bin/cosph-solid with 6, 10
 and 16 (the case's default) particles across the thickness, once with each
 velocity gradient (solid.velocity_gradient: "quadratic", the default, first
-and plotted; "linear", SPEC.md's), measures the period of tip_dy from its zero
+and plotted; "linear", the solver's default), measures the period of tip_dy from its zero
 crossings, and writes
   docs/figures/oscillating_plate.png              tip_dy(t), theoretical period marked
   docs/figures/oscillating_plate_convergence.png  period error against dx / H

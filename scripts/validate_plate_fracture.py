@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Plate fracture (SPEC.md scene 3): the elastic plate broken by the water.
+"""Plate fracture (the study's scene 3): the elastic plate broken by the water.
 
 Runs, through the launcher:
   1. the calibration: cases/plate_fracture.pbtxt with fracture off, to

@@ -19,15 +19,13 @@ struct Pair {
   Vec2 grad_W;  // grad_f W_fs
 };
 
-// h_fs is SPEC.md's mean for both interface models. A moving wall with the
-// water's own h, as the water's walls have, was measured: at the elastic
-// plate's 2 mm water and 1 mm plate it shrinks the mismatch of the kernel sums
-// over the water and the wall in the water's first two layers, and the
-// pressure pulse a clamped plate sends into still water (the force on it
-// +38 % in the first 2 ms with the mean, -10 % with the water's h); but that
-// support, 5.2 mm, spans the 5 mm plate, so the wall pressure mixes the water
-// of both sides once it flows past, and the free plate bent less (tip x RMS
-// against Antoci 10.3 mm against 8.9, multi-rate).
+// h_fs is the mean of the two phases' h for both interface models
+// (docs/physics.md, "Coupling"). A moving wall with the water's own h, as the
+// water's walls have, shrinks the mismatch of the kernel sums over water and
+// wall where a fine plate meets coarser water, and with it the pressure pulse
+// a clamped plate sends into still water; but at the elastic plate's
+// resolutions that support spans the plate, so the wall pressure mixes the
+// water of both sides once it flows past, and the free plate bent less.
 std::vector<Pair> find_pairs(const sph::InterfaceParticles& F, const sph::InterfaceParticles& S) {
   std::vector<Pair> pairs;
   // 2 h_fs = h_f + h_s, so no pair reaches farther than the two largest h.

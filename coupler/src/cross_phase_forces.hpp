@@ -2,15 +2,16 @@
 // h_fs = (h_f + h_s) / 2) and shared equal and opposite, so the exchange
 // conserves momentum. Two interface models (case field coupling.interface):
 //
-// stress_sum, the study's rule (SPEC.md "Momentum: the coupling rule"): the
+// stress_sum, the study's rule (docs/physics.md, "Stress sum"): the
 // momentum sum runs over both phases with each particle's own stress,
 //   m_f a_f += m_f m_s ( (sigma_f + sigma_s) / (rho_f rho_s) - Pi_fs I ) . grad_f W_fs,
 // the same pair term as inside each phase (sphcore/pair_terms.hpp).
 //
-// moving_wall: the water sees each solid particle as a moving wall particle
-// of the solid's volume V_s = m_s / rho_s, as it sees its own walls (Adami,
-// Hu & Adams 2012): pressure P_w extrapolated from the water around it
-// (sphcore/wall_pressure.hpp), and a share in the water's continuity,
+// moving_wall (docs/physics.md, "Moving wall"): the water sees each solid
+// particle as a moving wall particle of the solid's volume V_s = m_s / rho_s,
+// as it sees its own walls (Adami, Hu & Adams 2012): pressure P_w
+// extrapolated from the water around it (sphcore/wall_pressure.hpp), and a
+// share in the water's continuity,
 //   a_f     += V_s ( (sigma_f - P_w I) / rho_f - rho_f Pi_fs I ) . grad_f W_fs
 //   drho_f  += rho_f V_s (v_f - v_s) . grad_f W_fs.
 // The solid then feels the water's pressure, not its own stress: the bending

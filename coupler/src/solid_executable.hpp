@@ -1,5 +1,5 @@
-// Which program the launcher starts for a case's solid (issue 7: a solid
-// model of your own runs without editing cosph). The case names it in
+// Which program the launcher starts for a case's solid, so that a solid
+// model of your own runs without editing cosph. The case names it in
 // solid.executable; without that field the built-in solver of solid.model
 // runs (cosph::solid::model_executable).
 #pragma once

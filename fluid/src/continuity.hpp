@@ -1,5 +1,5 @@
-// Continuity with delta-SPH density diffusion (SPEC.md "Fluid"; Marrone et al.
-// 2011, CMAME 200:1526):
+// Continuity with delta-SPH density diffusion (docs/physics.md, "Continuity
+// and delta-SPH"; Marrone et al. 2011, CMAME 200:1526):
 //   drho_i/dt = rho_i sum_j V_j v_ij . grad_i W_ij
 //             + delta h c0 sum_j V_j psi_ij . grad_i W_ij,   V_j = m_j / rho_j
 //   psi_ij = 2 (rho_j - rho_i) (x_j - x_i) / r_ij^2 - (<grad rho>_i + <grad rho>_j)

@@ -1,4 +1,5 @@
-// Tait equation of state for weakly compressible water (SPEC.md "Fluid"):
+// Tait equation of state for weakly compressible water (docs/physics.md,
+// "Equation of state"):
 //   P = P0 [ (rho/rho0)^gamma - 1 ],  gamma = 7,  P0 = rho0 c0^2 / gamma.
 #pragma once
 

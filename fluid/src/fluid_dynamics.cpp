@@ -18,10 +18,8 @@ namespace cosph::fluid {
 namespace kernel = sph::kernel;
 
 // The neighbour passes keep OpenMP's own loops rather than sph::parallel_for:
-// written as its lambdas, the two pair passes ran 7-8 % slower at 59 144
-// particles (time per pass against an unchanged function of the same run),
-// while a region of one thread costs a system call, about 1 % of a step at
-// 5 000 particles.
+// written as its lambdas, the two pair passes ran slower on large scenes,
+// while a region of one thread costs only a system call on small ones.
 
 namespace {
 double support_squared(const FluidParameters& par) {

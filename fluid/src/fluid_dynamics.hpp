@@ -1,4 +1,5 @@
-// The neighbour passes of one fluid step (SPEC.md "Fluid").
+// The neighbour passes of one fluid step (docs/physics.md, "Continuity and
+// delta-SPH" to "Walls").
 //
 // 1. continuity_and_gradients: drho/dt from continuity with delta-SPH
 //    diffusion, and, for the next passes, the renormalised density and velocity

@@ -1,4 +1,5 @@
-// The case's "fluid" block, validated, with the defaults of SPEC.md applied.
+// The case's "fluid" block, validated, with the defaults applied (docs/cases.md;
+// their rules: docs/physics.md).
 #pragma once
 
 #include <vector>

@@ -1,5 +1,5 @@
 // The fluid solver: owns the water and wall particles and advances them by
-// kick-drift-kick, one force evaluation per step (SPEC.md "Time integration").
+// kick-drift-kick, one force evaluation per step (docs/physics.md, "Time step").
 //
 // Step from t to t + dt, with a known at t:
 //   v   += dt/2 a                         (kick)

@@ -16,7 +16,7 @@ using cosph::fluid::FluidSolver;
 
 int run_fluid(int argc, char** argv) {
   const sph::SolverArgs args = sph::parse_solver_args(
-      argc, argv, "cosph-fluid", "Weakly compressible SPH water solver (SPEC.md \"Fluid\").");
+      argc, argv, "cosph-fluid", "Weakly compressible SPH water solver (docs/physics.md).");
   const sph::CaseFile case_file = sph::load_case(args.case_path, args.overrides);
   const auto parameters = cosph::fluid::read_fluid_parameters(case_file);
   const bool coupled = !args.endpoint.empty();

@@ -1,5 +1,4 @@
-// Momentum equation of the water (SPEC.md "Fluid" and "Momentum: the coupling
-// rule"):
+// Momentum equation of the water (docs/physics.md, "Momentum"):
 //   dv_i/dt = g + sum_j m_j ( (sigma_i + sigma_j) / (rho_i rho_j) - Pi_ij I ) . grad_i W_ij,
 //   sigma = -p I + tau.
 // sph::momentum_pair is this pair term for any two particles. The water's own

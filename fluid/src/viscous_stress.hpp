@@ -1,4 +1,4 @@
-// Newtonian viscous stress of SPEC.md:
+// Newtonian viscous stress (docs/physics.md, "Physical viscosity"):
 //   tau_ab = mu ( dv_b/dx_a + dv_a/dx_b - (2/3) (div v) delta_ab )
 // from the renormalised velocity gradient grad_v(a, b) = dv_a/dx_b.
 #pragma once

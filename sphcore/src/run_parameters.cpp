@@ -12,7 +12,7 @@ RunParameters read_run_parameters(const CaseFile& case_file) {
   require(run.snapshot_interval() >= 0.0, case_file, "run.snapshot_interval",
           "must not be negative");
   // Up to 8 so that scripts/stability_map.py can find where the step breaks;
-  // SPEC.md's range is 0.2 to 0.3.
+  // the usual range is 0.2 to 0.3 (docs/physics.md, "Time step").
   require(run.cfl() >= 0.0 && run.cfl() <= 8.0, case_file, "run.cfl",
           "must lie in (0, 8], got " + format_number(run.cfl()));
   require(run.threads() >= 0, case_file, "run.threads", "must not be negative");
@@ -32,7 +32,7 @@ Resolution read_resolution(const CaseFile& case_file, const std::string& block, 
           "must be positive, got " + format_number(spacing) + " m");
   const double factor = h_factor > 0.0 ? h_factor : 1.3;
   require(factor >= 1.0 && factor <= 2.0, case_file, block + ".h_factor",
-          "must lie in [1, 2] (SPEC.md: 1.2 to 1.5), got " + format_number(h_factor));
+          "must lie in [1, 2] (usually 1.2 to 1.5), got " + format_number(h_factor));
   return {spacing, factor * spacing};
 }
 

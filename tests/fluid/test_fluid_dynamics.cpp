@@ -1,6 +1,6 @@
 // The fluid's neighbour passes (fluid_dynamics.hpp) on particle sets built by
-// hand: the renormalised gradients are exact for linear fields (SPEC.md
-// "Fluid"), the delta-SPH diffusion vanishes for a linear density field, and
+// hand: the renormalised gradients are exact for linear fields (docs/physics.md,
+// "Kernel"), the delta-SPH diffusion vanishes for a linear density field, and
 // the pair forces conserve linear momentum to round-off.
 #include <gtest/gtest.h>
 
@@ -72,9 +72,9 @@ TEST(FluidGradients, RenormalisedGradientsAreExactForLinearFields) {
 
 TEST(FluidGradients, DensityDiffusionVanishesForALinearDensityField) {
   // With the exact <grad rho> on every particle, psi_ij . grad_i W_ij is zero
-  // pair by pair (SPEC.md: the consistent form "vanishes for a linear density
-  // field"), so a still fluid with a linear density gets drho/dt = 0 everywhere,
-  // at the free edges too.
+  // pair by pair (docs/physics.md, "Continuity and delta-SPH": the diffusion
+  // vanishes for a linear density field), so a still fluid with a linear
+  // density gets drho/dt = 0 everywhere, at the free edges too.
   const int nx = 20;
   const double dx = 0.01;
   const FluidParameters p = water_parameters(dx);

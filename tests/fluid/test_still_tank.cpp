@@ -1,5 +1,5 @@
-// A still tank (SPEC.md "Walls": "a still tank holds hydrostatic pressure" and
-// "no fluid particle crosses a wall"): water 0.4 m wide and H = 0.2 m deep in a
+// A still tank (docs/physics.md, "Walls": the walls must hold the water's
+// hydrostatic pressure and let no water through): water 0.4 m wide and H = 0.2 m deep in a
 // closed tank, run for half a second from its hydrostatic start.
 #include <gtest/gtest.h>
 

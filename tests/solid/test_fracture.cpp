@@ -1,4 +1,4 @@
-// Von Mises fracture in the solid solver (SPEC.md "Fracture"): a bar pulled
+// Von Mises fracture in the solid solver (docs/physics.md, "Von Mises failure"): a bar pulled
 // beyond the yield stress of its weakened section fails there, when the load
 // says; failed material resists compression but not tension; failure
 // conserves momentum; the rigid walls a broken piece rests on; the broken

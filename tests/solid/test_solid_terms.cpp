@@ -42,7 +42,8 @@ TEST(JaumannRate, RigidRotationRotatesTheStressWithoutGrowingIt) {
   EXPECT_GT((s - wrong_way).norm(), 0.1 * s0.norm());
 }
 
-// The by-components form against SPEC.md's in matrices,
+// The by-components form against the matrix form of docs/physics.md,
+// "Jaumann solid",
 //   2G (e - (1/3) tr(e) I) + s w^T + w s,
 // for a velocity gradient and a stress with no symmetry to hide an index.
 TEST(JaumannRate, ByComponentsIsTheMatrixForm) {

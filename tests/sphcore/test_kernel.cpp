@@ -1,4 +1,4 @@
-// The cubic-spline kernel of SPEC.md "Kernel" against its defining properties
+// The cubic-spline kernel (docs/physics.md, "Kernel") against its defining properties
 // (unit integral, compact support, smoothness), the SPH sums it gives on a
 // particle lattice, and the renormalised gradient of renormalisation.hpp
 // (Randles & Libersky 1996), which must be exact for a linear field.

@@ -1,6 +1,7 @@
-// The pair terms every phase shares (pair_terms.hpp, SPEC.md "Momentum" and
-// "Fracture"): momentum exchange equal and opposite, artificial viscosity only
-// for approaching pairs, the von Mises stress of textbook states.
+// The pair terms every phase shares (pair_terms.hpp; docs/physics.md,
+// "Momentum", "Artificial viscosity" and "Von Mises failure"): momentum
+// exchange equal and opposite, artificial viscosity only for approaching
+// pairs, the von Mises stress of textbook states.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -151,7 +152,7 @@ TEST(VonMises, TextbookStates) {
 }
 
 TEST(VonMises, InPlaneHydrostaticStressFollowsTheSpecFormula) {
-  // SPEC.md's formula sqrt((3 s_ab s_ab - s_aa s_bb) / 2) over the 2x2 tensor
+  // The formula sqrt((3 s_ab s_ab - s_aa s_bb) / 2) over the 2x2 tensor
   // is the plane-stress von Mises stress: an in-plane pressure -p I (with
   // sigma_zz = 0) is equibiaxial compression and gives |p|, not 0. Only a full
   // 3-D hydrostatic state (sigma_zz = -p as well) has zero von Mises stress.

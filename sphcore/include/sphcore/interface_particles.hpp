@@ -1,6 +1,6 @@
 // What a solver shows the other phase: its particles near the interface, with
-// everything the cross-phase momentum term needs (SPEC.md "Momentum: the
-// coupling rule"). Plain data, so that solver cores know nothing of the
+// everything the cross-phase momentum term needs (docs/physics.md,
+// "Coupling"). Plain data, so that solver cores know nothing of the
 // transport that carries it.
 #pragma once
 

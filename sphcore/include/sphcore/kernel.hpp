@@ -1,4 +1,4 @@
-// The cubic-spline kernel of SPEC.md (Monaghan & Lattanzio 1985), 2-D
+// The cubic-spline kernel (docs/physics.md, "Kernel"; Monaghan & Lattanzio 1985), 2-D
 // normalisation 10 / (7 pi h^2), support radius 2h. Defined once here: every
 // solver, the coupler and the tests use this kernel and its gradient.
 #pragma once

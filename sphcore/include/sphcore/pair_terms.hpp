@@ -1,7 +1,7 @@
-// The pair terms of the momentum equation that every phase shares (SPEC.md
-// "Momentum: the coupling rule"). The fluid, the solid and the coupler call
-// these, so a fluid-solid pair is computed with exactly the same formula as a
-// pair inside one phase.
+// The pair terms of the momentum equation that every phase shares
+// (docs/physics.md, "Momentum" and "Artificial viscosity"). The fluid, the
+// solid and the coupler call these, so a fluid-solid pair is computed with
+// exactly the same formula as a pair inside one phase.
 #pragma once
 
 #include <algorithm>
@@ -27,8 +27,7 @@ inline double artificial_viscosity(const Vec2& x_ij, const Vec2& v_ij, double h_
 // The same Pi_ij for pairs that share h and c (one fluid), with one division
 // and no branch: in flowing water whether a pair approaches is a coin toss,
 // and the mispredicted branch of artificial_viscosity() cost more than
-// computing Pi for every pair (the dam break at 4 mm to t = 0.6 s ran 26-30 %
-// faster). In a bending solid the pattern is regular and the branch wins.
+// computing Pi for every pair. In a bending solid the pattern is regular and the branch wins.
 // Equal to artificial_viscosity() to round-off; exactly +0 for receding pairs,
 // where h v_ij . x_ij is clamped to 0.
 //   Pi_ij = (-A c h v.x d + B (h v.x)^2) / (d^2 rho_ij),  d = r^2 + 0.01 h^2.
@@ -63,7 +62,8 @@ inline double continuity_pair(double rho_i, double V_j, const Vec2& v_ij, const 
   return rho_i * V_j * v_ij.dot(grad_W_ij);
 }
 
-// Von Mises equivalent stress of a 2-D stress tensor (SPEC.md "Fracture"):
+// Von Mises equivalent stress of a 2-D stress tensor (docs/physics.md,
+// "Von Mises failure"):
 //   sqrt( (3 sigma_ab sigma_ab - sigma_aa sigma_bb) / 2 ).
 inline double von_mises(const Mat2& sigma) {
   const double trace = sigma.trace();

@@ -1,4 +1,5 @@
-// Kernel-gradient renormalisation (Randles & Libersky 1996; SPEC.md "Fluid"):
+// Kernel-gradient renormalisation (Randles & Libersky 1996; docs/physics.md,
+// "Kernel"):
 //   M_i = sum_j V_j grad_i W_ij (x) (x_j - x_i),   L_i = M_i^-1,
 // so that sum_j V_j (f_j - f_i) L_i grad_i W_ij is exact for a linear f.
 #pragma once

@@ -1,4 +1,4 @@
-// The explicit stable step of SPEC.md "Time integration":
+// The explicit stable step (docs/physics.md, "Time step"):
 //   dt <= C_cfl h / (c + |v|_max),  0.25 sqrt(h / |a|_max),  0.125 h^2 / nu.
 #pragma once
 
