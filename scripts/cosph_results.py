@@ -143,14 +143,16 @@ def running_mean(series, width):
     return mean, inner
 
 
-def pressure_noise(t, p, window, scale, t_from=-np.inf, t_to=np.inf):
+def pressure_noise(t, p, window, scale, t_from=-np.inf, t_to=np.inf, interval=None):
     """A pressure signal's (mean, noise) over t_from <= t <= t_to, both over
     SCALE (rho0 g H): the noise is the RMS of P about its own running mean over
     WINDOW seconds, what a sensor reads on top of the load's own evolution
     (issue 38). The samples must be evenly spaced; (nan, nan) when fewer than
-    one window of them lies in the interval."""
+    one window of them lies in the interval. The window's width in samples is
+    taken from INTERVAL, the run's output interval, when given, else from the
+    samples' median spacing."""
     t, p = np.asarray(t), np.asarray(p)
-    width = int(round(window / np.median(np.diff(t))))
+    width = int(round(window / (interval or np.median(np.diff(t)))))
     if width < 1 or len(p) <= width:
         return float("nan"), float("nan")
     mean, inner = running_mean(p, width)

@@ -176,7 +176,7 @@ def probe_noise(out, rho0=1000.0, g=9.81, scale_height=0.288):
     the flow and the column's sound waves."""
     series = cr.read_csv(os.path.join(out, "timeseries.csv"))
     return cr.pressure_noise(series["t"], series["probe0_pressure"], PROBE_WINDOW,
-                             rho0 * g * scale_height)[1]
+                             rho0 * g * scale_height, interval=PROBE_OUTPUT_INTERVAL)[1]
 
 
 def diffusion_rows(out_root):
