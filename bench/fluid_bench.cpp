@@ -75,10 +75,14 @@ double seconds_since(const std::vector<double>& start) {
   return longest;
 }
 
+// Case settings (--set FIELD=VALUE) for the fluid's runs, after its spacing.
+std::vector<std::string> fluid_settings;
+
 Measurement time_fluid(const std::string& case_path, double spacing, int threads, int steps) {
   omp_set_num_threads(threads);
-  const sph::CaseFile case_file =
-      sph::load_case(case_path, {"fluid.spacing=" + std::to_string(spacing)});
+  std::vector<std::string> settings{"fluid.spacing=" + std::to_string(spacing)};
+  settings.insert(settings.end(), fluid_settings.begin(), fluid_settings.end());
+  const sph::CaseFile case_file = sph::load_case(case_path, settings);
   FluidSolver solver(case_file, cosph::fluid::read_fluid_parameters(case_file));
   // Warm up (first touch, the collapse starting), then time a fixed number of steps.
   for (int s = 0; s < steps / 10 + 1; ++s) solver.step(solver.step_limits().smallest());
@@ -148,10 +152,12 @@ int bench(int argc, char** argv) {
       cpu_clock = true;
     else if (option == "--sorts")
       show_sorts = true;
+    else if (option == "--set" && i + 1 < argc)
+      fluid_settings.push_back(argv[++i]);
     else if (option == "--help" || option == "-h") {
       std::printf(
           "usage: cosph-bench [--steps N] [--quick | --largest] [--fluid | --solid]\n"
-          "                   [--spacing DX] [--threads T] [--cpu] [--sorts]\n\n"
+          "                   [--spacing DX] [--threads T] [--cpu] [--sorts] [--set F=V]\n\n"
           "Particle-steps per second of the fluid solver on the dam break at about 650, 10 000\n"
           "and 50 000 water particles (--quick: the first two; --largest: the last;\n"
           "--spacing: that one spacing instead), and of the solid (--fluid: not; --solid: the\n"
@@ -159,12 +165,13 @@ int bench(int argc, char** argv) {
           "(--threads: on T only). --cpu: CPU time of the busiest thread instead of wall\n"
           "time, for a shared machine (with OMP_WAIT_POLICY=passive on several threads). --sorts: "
           "the fluid's neighbour re-sorts in the timed steps,\n"
-          "after its rows. Not a test.\n");
+          "after its rows. --set F=V: a setting of the dam break for the fluid's runs (as\n"
+          "cosph run's; may be repeated). Not a test.\n");
       return 0;
     } else
       throw sph::ConfigError(
           "usage: cosph-bench [--steps N] [--quick | --largest] [--fluid | --solid] [--spacing DX] "
-          "[--threads T] [--cpu] [--sorts]");
+          "[--threads T] [--cpu] [--sorts] [--set F=V]");
   }
   const std::string case_path = std::string(COSPH_SOURCE_DIR) + "/cases/dam_break.pbtxt";
   if (quick && spacings.size() > 1) spacings.pop_back();

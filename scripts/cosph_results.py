@@ -134,6 +134,36 @@ def rms_error(t_model, y_model, t_ref, y_ref):
     return float(np.sqrt(np.mean(difference ** 2)))
 
 
+def running_mean(series, width):
+    """The centred running mean of SERIES over WIDTH samples, at the samples
+    WIDTH // 2 from either end (the others have no full window); returns
+    (the mean, the slice of SERIES it belongs to)."""
+    mean = np.convolve(series, np.ones(width) / width, mode="valid")
+    inner = slice(width // 2, width // 2 + len(mean))
+    return mean, inner
+
+
+def pressure_noise(t, p, window, scale, t_from=-np.inf, t_to=np.inf, interval=None):
+    """A pressure signal's (mean, noise) over t_from <= t <= t_to, both over
+    SCALE (rho0 g H): the noise is the RMS of P about its own running mean over
+    WINDOW seconds, what a sensor reads on top of the load's own evolution
+    (issue 38). The samples must be evenly spaced; (nan, nan) when fewer than
+    one window of them lies in the interval. The window's width in samples is
+    taken from INTERVAL, the run's output interval, when given, else from the
+    samples' median spacing."""
+    t, p = np.asarray(t), np.asarray(p)
+    width = int(round(window / (interval or np.median(np.diff(t)))))
+    if width < 1 or len(p) <= width:
+        return float("nan"), float("nan")
+    mean, inner = running_mean(p, width)
+    taken = (t[inner] >= t_from) & (t[inner] <= t_to)
+    if taken.sum() < width:
+        return float("nan"), float("nan")
+    level = np.mean(p[inner][taken]) / scale
+    noise = np.sqrt(np.mean((p[inner][taken] - mean[taken]) ** 2)) / scale
+    return float(level), float(noise)
+
+
 def write_table(name, header, rows, preamble=""):
     """docs/results/NAME.md: a markdown table the README includes."""
     os.makedirs(RESULTS, exist_ok=True)

@@ -170,17 +170,13 @@ PROBE_WINDOW = 0.01             # s: a fifth of the column's acoustic period 4H/
 
 
 def probe_noise(out, rho0=1000.0, g=9.81, scale_height=0.288):
-    """RMS of the dam break's floor sensor (probe0, under the column) minus its
-    running mean over PROBE_WINDOW, over rho0 g H: what the sensor reads on top
-    of the flow and the column's sound waves."""
+    """The dam break's floor sensor (probe0, under the column) over the whole
+    run: RMS of its pressure about its running mean over PROBE_WINDOW, over
+    rho0 g H (cosph_results.pressure_noise): what the sensor reads on top of
+    the flow and the column's sound waves."""
     series = cr.read_csv(os.path.join(out, "timeseries.csv"))
-    p = series["probe0_pressure"]
-    width = int(round(PROBE_WINDOW / PROBE_OUTPUT_INTERVAL))
-    if len(p) <= width:
-        return float("nan")
-    running_mean = np.convolve(p, np.ones(width) / width, mode="valid")
-    inner = p[width // 2: width // 2 + len(running_mean)]
-    return float(np.sqrt(np.mean((inner - running_mean) ** 2)) / (rho0 * g * scale_height))
+    return cr.pressure_noise(series["t"], series["probe0_pressure"], PROBE_WINDOW,
+                             rho0 * g * scale_height, interval=PROBE_OUTPUT_INTERVAL)[1]
 
 
 def diffusion_rows(out_root):

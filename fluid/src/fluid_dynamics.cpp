@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "continuity.hpp"
+#include "hydrostatic_density_diffusion.hpp"
 #include "momentum.hpp"
 #include "sphcore/kernel.hpp"
 #include "sphcore/pair_terms.hpp"
@@ -32,6 +33,9 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
                                       const FluidParameters& par) {
   const long n = static_cast<long>(P.size());
   const double diffusion = par.delta * par.h * par.c0;
+  const HydrostaticDensityDifference rho_hydrostatic(par.run.gravity,
+                                                     TaitEquationOfState(par.rho0, par.c0));
+  const double inverse_rho0_c0 = 1.0 / (par.rho0 * par.c0);
   P.grad_rho_next.resize(P.size());
   P.volume.resize(P.size());
   P.spray.resize(P.size());
@@ -60,8 +64,20 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
         wall_in_reach = true;
         continue;
       }
-      diffusion_i +=
-          density_diffusion_pair(rho_i, rho_j, F[k], grad_rho_i, P.grad_rho[j], V_j, grad_W_ij);
+      switch (par.dissipation) {
+        case Dissipation::delta_sph:
+          diffusion_i +=
+              density_diffusion_pair(rho_i, rho_j, F[k], grad_rho_i, P.grad_rho[j], V_j, grad_W_ij);
+          break;
+        case Dissipation::fourtakas:
+          diffusion_i +=
+              hydrostatic_density_diffusion_pair(rho_i, rho_j, rho_hydrostatic(x_ij), F[k], V_j);
+          break;
+        case Dissipation::riemann:
+          drho_i += riemann_density_dissipation_pair(rho_i, V_j, P.p[i], P.p[j], F[k], x_ij,
+                                                     inverse_rho0_c0);
+          break;
+      }
       const Vec2 Vg = V_j * grad_W_ij;
       sums.add(Vg, x_ij, v_ij);
       grad_rho_raw += (rho_j - rho_i) * Vg;
@@ -162,7 +178,7 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
     const auto neighbours = pairs.neighbours(i);
     return neighbours.empty() ? i : neighbours.back();
   });
-  const sph::UniformArtificialViscosity Pi_of(par.h, par.c0, par.A, par.B);
+  const MomentumDissipation Pi_of(par.dissipation, par.h, par.c0, par.A, par.B);
 #pragma omp parallel for schedule(static) if (threaded)
   for (long b = 0; b < blocks; ++b) {
     for (long i = shares.begin(b); i < shares.end(b); ++i) P.a[i].setZero();
@@ -209,7 +225,7 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
 std::vector<Vec2> forces_on_walls(const FluidParticles& P, const sph::NeighbourList& pairs,
                                   const FluidParameters& par) {
   std::vector<Vec2> force(P.first_wall_id.size(), Vec2::Zero());
-  const sph::UniformArtificialViscosity Pi_of(par.h, par.c0, par.A, par.B);
+  const MomentumDissipation Pi_of(par.dissipation, par.h, par.c0, par.A, par.B);
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (!P.is_water(i)) continue;
     const auto neighbours = pairs.neighbours(static_cast<long>(i));

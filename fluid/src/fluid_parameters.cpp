@@ -32,6 +32,14 @@ FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
   p.delta = fluid.density_diffusion() < 0.0   ? 0.0
             : fluid.density_diffusion() > 0.0 ? fluid.density_diffusion()
                                               : 0.1;
+  require(
+      fluid.dissipation().empty() || fluid.dissipation() == "delta_sph" ||
+          fluid.dissipation() == "fourtakas" || fluid.dissipation() == "riemann",
+      case_file, "fluid.dissipation",
+      "unknown dissipation '" + fluid.dissipation() + "' (known: delta_sph, fourtakas, riemann)");
+  p.dissipation = fluid.dissipation() == "riemann"     ? Dissipation::riemann
+                  : fluid.dissipation() == "fourtakas" ? Dissipation::fourtakas
+                                                       : Dissipation::delta_sph;
 
   require(fluid.water_size() > 0, case_file, "fluid.water", "no water region given");
   double tallest = 0.0;

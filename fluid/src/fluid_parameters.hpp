@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "dissipation.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/run_parameters.hpp"
 
@@ -20,6 +21,9 @@ struct FluidParameters {
   double A, B;                  // Monaghan artificial viscosity
   double left_wall_x, floor_y;  // gauges
   std::vector<sph::Vec2> pressure_probes;
+
+  // Of the water's sound waves and pressure noise.
+  Dissipation dissipation = Dissipation::delta_sph;
 };
 
 // Throws sph::ConfigError naming the file, field and reason for bad input.

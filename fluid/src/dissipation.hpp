@@ -1,0 +1,38 @@
+// Which dissipation the water's sound waves and pressure noise meet
+// (fluid.dissipation, proto/case.proto):
+//   delta_sph  density diffusion with renormalised gradients (continuity.hpp)
+//              and Monaghan's artificial viscosity: the default;
+//   fourtakas  density diffusion with the hydrostatic part removed
+//              (hydrostatic_density_diffusion.hpp) and Monaghan's viscosity;
+//   riemann    Riemann-solver SPH with the dissipation limiter in both
+//              equations (riemann_dissipation.hpp), no artificial viscosity.
+#pragma once
+
+#include "riemann_dissipation.hpp"
+#include "sphcore/pair_terms.hpp"
+
+namespace cosph::fluid {
+
+enum class Dissipation { delta_sph, fourtakas, riemann };
+
+// The Pi_ij of the momentum bracket for the chosen dissipation: Monaghan's
+// artificial viscosity or the Riemann solver's limited dissipation. The
+// choice is the same for every pair, so the branch costs next to nothing.
+class MomentumDissipation {
+ public:
+  MomentumDissipation(Dissipation dissipation, double h, double c0, double A, double B)
+      : riemann_(dissipation == Dissipation::riemann),
+        monaghan_(h, c0, A, B),
+        riemann_limited_(c0) {}
+
+  double operator()(const Vec2& x_ij, const Vec2& v_ij, double rho_bar) const {
+    return riemann_ ? riemann_limited_(x_ij, v_ij, rho_bar) : monaghan_(x_ij, v_ij, rho_bar);
+  }
+
+ private:
+  bool riemann_;
+  sph::UniformArtificialViscosity monaghan_;
+  RiemannLimitedDissipation riemann_limited_;
+};
+
+}  // namespace cosph::fluid

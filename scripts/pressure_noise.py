@@ -1,0 +1,156 @@
+#!/usr/bin/python3
+"""Pressure noise against cost per step: the dissipation options side by side (issue 38).
+
+For each option of fluid.dissipation, the dam break (cases/dam_break.pbtxt, to
+its end time) at 8 and 4 mm and the still tank (the tank filled to H, 8 mm):
+  - the far-wall sensor's (probe1) mean and noise after the impact, and the
+    floor sensor's (probe0), as validate_dam_break.py measures them: over
+    t = 0.35-0.55 s, the noise being the RMS about the running mean over
+    0.1 sqrt(H/g), both over rho0 g H;
+  - the front's RMS relative error against Martin & Moyce (T <= 3.1);
+  - the fluid's cost per step: build/bin/cosph-bench on one thread, CPU time of
+    the thread (--cpu), the options taken in turn, REPEATS times over, median.
+Writes docs/results/pressure_noise.md and docs/figures/pressure_noise.png.
+
+usage: /usr/bin/python3 scripts/pressure_noise.py [--out DIR] [--reuse] [--repeats N]
+"""
+import argparse
+import os
+import subprocess
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+import cosph_results as cr  # noqa: E402
+import validate_dam_break as dam  # noqa: E402
+
+OPTIONS = [  # (key, label, settings)
+    ("delta_sph", "delta-SPH (Marrone et al. 2011), the default", []),
+    ("fourtakas", "hydrostatic-free diffusion (Fourtakas et al. 2019)",
+     ["fluid.dissipation=fourtakas"]),
+    ("riemann", "Riemann solver with limiter (Zhang, Hu & Adams 2017)",
+     ["fluid.dissipation=riemann"]),
+]
+SPACINGS = [0.008, 0.004]
+BENCH_STEPS = 400
+
+
+def run(out, settings, reuse):
+    """The run's timeseries, running it unless REUSE finds it already there."""
+    series_path = os.path.join(out, "timeseries.csv")
+    if not (reuse and os.path.exists(series_path)):
+        cr.run_case("dam_break", out, settings + [f"run.output_interval={dam.OUTPUT_INTERVAL}"])
+    return cr.read_csv(series_path)
+
+
+def front_error(series, experiment):
+    T, Z, _ = dam.dimensionless(series)
+    T_exp, Z_exp = experiment["T_t_sqrt_2g_over_a"], experiment["Z_z_over_a"]
+    window = T_exp <= dam.T_LAST
+    return cr.rms_relative_error(T, Z, T_exp[window], Z_exp[window])[0]
+
+
+def bench_ms_per_step(settings, spacing):
+    """ms per step of the fluid alone, one thread, the thread's CPU time."""
+    command = [os.path.join(cr.REPO, "build", "bin", "cosph-bench"), "--fluid", "--cpu",
+               "--threads", "1", "--spacing", str(spacing), "--steps", str(BENCH_STEPS)]
+    for setting in settings:
+        command += ["--set", setting]
+    output = subprocess.run(command, check=True, stdout=subprocess.PIPE, text=True).stdout
+    row = [line for line in output.splitlines() if line.startswith("fluid")][0]
+    return float(row.split()[3])
+
+
+def costs(repeats, spacing):
+    """{key: median ms per step}, the options timed in turn, REPEATS rounds."""
+    times = {key: [] for key, _, _ in OPTIONS}
+    for _ in range(repeats):
+        for key, _, settings in OPTIONS:
+            times[key].append(bench_ms_per_step(settings, spacing))
+    return {key: float(np.median(values)) for key, values in times.items()}
+
+
+def draw(rows, cost, path):
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    default = cost["delta_sph"]
+    for k, (key, label, _) in enumerate(OPTIONS):
+        relative = cost[key] / default
+        for dx, marker in zip(SPACINGS, ("o", "s")):
+            noise = rows[(key, dx)]["far_wall"][1]
+            ax.plot(relative, noise, marker, color=f"C{k}", ms=8,
+                    label=f"{label}, {dx * 1e3:g} mm")
+    ax.axhline(0.05, color="0.5", ls="--", lw=0.8, label="target: 0.05 rho0 g H")
+    ax.axvline(1.3, color="0.5", ls=":", lw=0.8, label="at most 30 % slower per step")
+    ax.set(xlabel=f"cost per step / the default's (fluid alone, {SPACINGS[-1] * 1e3:g} mm, "
+                  "one thread)",
+           ylabel="far-wall sensor noise / (rho0 g H)", ylim=(0, None),
+           title="Dam break: pressure noise after the impact against cost")
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", default=os.path.join(cr.REPO, "out", "pressure_noise"))
+    parser.add_argument("--reuse", action="store_true",
+                        help="read the runs already in --out; run only the missing ones")
+    parser.add_argument("--repeats", type=int, default=5,
+                        help="rounds of the cost measurement (the median is taken)")
+    args = parser.parse_args()
+
+    experiment = cr.reference("martin_moyce_n2_front.csv")
+    rows = {}
+    for key, label, settings in OPTIONS:
+        for dx in SPACINGS:
+            series = run(os.path.join(args.out, f"{key}_dx_{dx:g}"),
+                         settings + [f"fluid.spacing={dx}"], args.reuse)
+            rows[(key, dx)] = {"far_wall": dam.sensor_noise(series, "probe1"),
+                               "floor": dam.sensor_noise(series, "probe0"),
+                               "front": front_error(series, experiment),
+                               "spray": cr.spray_removed(series)}
+            print(key, dx, rows[(key, dx)], flush=True)
+        series = run(os.path.join(args.out, f"{key}_still_tank"), settings + dam.STILL_TANK,
+                     args.reuse)
+        rows[(key, "still")] = {"floor": dam.sensor_noise(series, "probe0")}
+    cost = costs(args.repeats, SPACINGS[-1])
+    print("ms per step:", cost, flush=True)
+
+    table = []
+    default = cost["delta_sph"]
+    for key, label, _ in OPTIONS:
+        for dx in SPACINGS:
+            r = rows[(key, dx)]
+            table.append([label, f"{dx * 1e3:g}", f"{r['far_wall'][0]:.3f}",
+                          f"{r['far_wall'][1]:.3f}", f"{r['floor'][0]:.3f}", f"{r['floor'][1]:.3f}",
+                          f"{100 * r['front']:.1f} %", r["spray"],
+                          f"{cost[key]:.3f} ({cost[key] / default:.2f})" if dx == SPACINGS[-1]
+                          else ""])
+        still = rows[(key, "still")]["floor"]
+        table.append([label, "still tank, 8", "", "", f"{still[0]:.3f}", f"{still[1]:.3f}", "", "",
+                      ""])
+    figure = os.path.join(cr.FIGURES, "pressure_noise.png")
+    draw(rows, cost, figure)
+    path = cr.write_table(
+        "pressure_noise",
+        ["dissipation", "spacing (mm)", "far wall: mean", "noise", "floor: mean", "noise",
+         "front: RMS rel. error", "water left as spray",
+         f"ms per step at {SPACINGS[-1] * 1e3:g} mm (/ default)"],
+        table,
+        preamble="The dam break's pressure sensors after the impact (t = "
+                 f"{dam.AFTER_IMPACT[0]:g}-{dam.AFTER_IMPACT[1]:g} s) for each option of "
+                 "`fluid.dissipation`: mean, and noise as the RMS about the running mean over "
+                 f"0.1 sqrt(H/g) = {1e3 * dam.NOISE_WINDOW:.0f} ms, both over rho0 g H "
+                 "(H = 0.288 m); the front's RMS relative error against Martin & Moyce "
+                 "(T <= 3.1); the fluid's cost per step alone (`cosph-bench --cpu`, one thread, "
+                 f"{BENCH_STEPS} steps, the options in turn, median of {args.repeats}). "
+                 "Produced by `scripts/pressure_noise.py`.")
+    print(open(path).read())
+    print("wrote", figure)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,122 @@
+// The dissipation options of fluid.dissipation (dissipation.hpp): each pair
+// term against its formula and its physics (what it damps, what it leaves
+// alone), and each option holding a still tank at hydrostatic pressure.
+#include <gtest/gtest.h>
+
+#include <omp.h>
+
+#include <cmath>
+#include <string>
+
+#include "dissipation.hpp"
+#include "equation_of_state.hpp"
+#include "fluid_parameters.hpp"
+#include "fluid_solver.hpp"
+#include "hydrostatic_density_diffusion.hpp"
+#include "riemann_dissipation.hpp"
+#include "sphcore/case_file.hpp"
+#include "sphcore/kernel.hpp"
+
+namespace cosph::fluid {
+namespace {
+
+const std::string kDamBreak = std::string(COSPH_SOURCE_DIR) + "/cases/dam_break.pbtxt";
+constexpr double kRho0 = 1000.0, kC0 = 23.8, kG = 9.81;
+
+TEST(RiemannDissipation, DampsOnlyApproachAndIsLimitedToTheSoundSpeed) {
+  const RiemannLimitedDissipation Pi(kC0);
+  const Vec2 x_ij(0.008, 0.0);  // i to the right of j
+  const double rho_bar = 1010.0;
+  // Moving apart: no dissipation at all.
+  EXPECT_EQ(Pi(x_ij, Vec2(0.5, 0.0), rho_bar), 0.0);
+  // Slow approach, U_i - U_j = 0.5 m/s: beta = 3 (U_i - U_j), Pi = 3 (0.5)^2 / rho_bar.
+  EXPECT_NEAR(Pi(x_ij, Vec2(-0.5, 0.0), rho_bar), 3.0 * 0.25 / rho_bar, 1e-15);
+  // Only the component along the line of centres counts.
+  EXPECT_NEAR(Pi(x_ij, Vec2(-0.5, 7.0), rho_bar), 3.0 * 0.25 / rho_bar, 1e-15);
+  // Fast approach: beta is capped at c0.
+  EXPECT_NEAR(Pi(x_ij, Vec2(-10.0, 0.0), rho_bar), kC0 * 10.0 / rho_bar, 1e-12);
+}
+
+TEST(RiemannDissipation, DensityFlowsFromHighToLowPressure) {
+  const double h = 0.0104, rho_i = 1002.0, V_j = 6.4e-5, P_i = 3000.0, P_j = 1000.0;
+  const Vec2 x_ij(0.006, 0.005);
+  const double r = x_ij.norm();
+  const double F_ij = sph::kernel::dW_dr(r, h) / r;
+  const double inverse_rho0_c0 = 1.0 / (kRho0 * kC0);
+  const double into_i =
+      riemann_density_dissipation_pair(rho_i, V_j, P_i, P_j, F_ij, x_ij, inverse_rho0_c0);
+  // rho_i V_j (P_i - P_j) / (rho0 c0) dW/dr: negative, i is at the higher pressure.
+  EXPECT_NEAR(into_i, rho_i * V_j * (P_i - P_j) * inverse_rho0_c0 * sph::kernel::dW_dr(r, h),
+              1e-12 * std::abs(into_i));
+  EXPECT_LT(into_i, 0.0);
+  EXPECT_GT(riemann_density_dissipation_pair(rho_i, V_j, P_j, P_i, F_ij, -x_ij, inverse_rho0_c0),
+            0.0);
+}
+
+TEST(HydrostaticDensityDiffusion, VanishesForHydrostaticDensityOnly) {
+  const TaitEquationOfState eos(kRho0, kC0);
+  const HydrostaticDensityDifference rho_hydrostatic(Vec2(0.0, -kG), eos);
+  // The paper's rho_H is the Tait law linearised about the free surface's
+  // pressure: exact for i on the surface, 1 % off at 0.1 m depth (relative
+  // error about (6/7) rho0 g depth / C_B).
+  const double h = 0.0104, V_j = 6.4e-5, depth_i = 0.0;
+  // j is 6 mm below and 3 mm beside i: at hydrostatic pressure its density is higher.
+  const Vec2 x_ij(0.003, 0.006);
+  const double rho_i = eos.density(kRho0 * kG * depth_i);
+  const double rho_j = eos.density(kRho0 * kG * (depth_i + x_ij.y()));
+  const double r = x_ij.norm();
+  const double F_ij = sph::kernel::dW_dr(r, h) / r;
+  const double rho_H = rho_hydrostatic(x_ij);
+  EXPECT_GT(rho_H, 0.0);
+  EXPECT_NEAR(rho_H, rho_j - rho_i, 1e-9 * (rho_j - rho_i));
+  EXPECT_NEAR(hydrostatic_density_diffusion_pair(rho_i, rho_j, rho_H, F_ij, V_j), 0.0, 1e-9);
+  // Half a kg/m^3 more at j than hydrostatics asks: it diffuses into i.
+  EXPECT_GT(hydrostatic_density_diffusion_pair(rho_i, rho_j + 0.5, rho_H, F_ij, V_j), 0.0);
+}
+
+TEST(Dissipation, AnUnknownNameIsRefusedNamingTheField) {
+  const sph::CaseFile case_file = sph::load_case(kDamBreak, {"fluid.dissipation=riemman"});
+  try {
+    read_fluid_parameters(case_file);
+    FAIL() << "an unknown dissipation was accepted";
+  } catch (const sph::ConfigError& error) {
+    EXPECT_NE(std::string(error.what()).find("fluid.dissipation"), std::string::npos)
+        << error.what();
+    EXPECT_NE(std::string(error.what()).find("riemman"), std::string::npos) << error.what();
+  }
+}
+
+// The dam break's tank filled to H = 0.288 m at 8 mm: after 0.4 s the water at
+// the bottom (y < 0.05 m) holds rho0 g (H - y) within 2 % on average, and
+// nothing moves faster than 5 % of sqrt(g H).
+class StillTankWith : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(StillTankWith, HoldsHydrostaticPressure) {
+  omp_set_num_threads(1);
+  const sph::CaseFile case_file = sph::load_case(
+      kDamBreak, {"fluid.water[0].max.x=0.576", std::string("fluid.dissipation=") + GetParam()});
+  FluidSolver solver(case_file, read_fluid_parameters(case_file));
+  const double H = 0.288, end_time = 0.4, average_from = 0.3;
+  double measured = 0.0, hydrostatic = 0.0;
+  while (solver.time() < end_time - 1e-12) {
+    solver.step(std::min(solver.step_limits().smallest(), end_time - solver.time()));
+    if (solver.time() < average_from) continue;
+    const FluidParticles& P = solver.particles();
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      if (!P.is_water(i) || P.x[i].y() >= 0.05) continue;
+      measured += P.p[i];
+      hydrostatic += kRho0 * kG * (H - P.x[i].y());
+    }
+  }
+  EXPECT_NEAR(measured, hydrostatic, 0.02 * hydrostatic);
+  EXPECT_LT(solver.gauges().max_speed, 0.05 * std::sqrt(kG * H));
+}
+
+// Not "riemann": its density dissipation diffuses the hydrostatic density
+// profile too, and with walls left out of it the bottom band ends 3.7 % below
+// hydrostatic pressure (measured at the time of writing), the reason it is
+// not the default (docs/results/pressure_noise.md).
+INSTANTIATE_TEST_SUITE_P(EachOption, StillTankWith, ::testing::Values("delta_sph", "fourtakas"));
+
+}  // namespace
+}  // namespace cosph::fluid
