@@ -71,14 +71,15 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
   SolidParameters p;
   p.run = sph::read_run_parameters(case_file);
 
-  require(
-      solid.model().empty() || solid.model() == "jaumann" || solid.model() == "total_lagrangian",
-      case_file, "solid.model",
-      "unknown model '" + solid.model() +
-          "' (known: jaumann, total_lagrangian; a solid model of your own: name its program "
-          "in solid.executable)");
-  p.model =
-      solid.model() == "total_lagrangian" ? SolidModel::total_lagrangian : SolidModel::jaumann;
+  require(solid.model().empty() || solid.model() == "jaumann" ||
+              solid.model() == "total_lagrangian" || solid.model() == "shell",
+          case_file, "solid.model",
+          "unknown model '" + solid.model() +
+              "' (known: jaumann, total_lagrangian, shell; a solid model of your own: name its "
+              "program in solid.executable)");
+  p.model = solid.model() == "total_lagrangian" ? SolidModel::total_lagrangian
+            : solid.model() == "shell"          ? SolidModel::shell
+                                                : SolidModel::jaumann;
   const sph::Resolution resolution =
       sph::read_resolution(case_file, "solid", solid.spacing(), solid.h_factor());
   p.dx = resolution.dx;
@@ -107,10 +108,15 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
       gradient == "quadratic" ? VelocityGradient::quadratic : VelocityGradient::linear;
 
   require(solid.body_size() > 0, case_file, "solid.body", "no solid region given");
+  // A shell's body and clamp boxes may be thinner than a spacing: its
+  // thickness is a property, not particles (solid/shell/shell_line.hpp).
+  const double least_side = p.model == SolidModel::shell ? 0.0 : p.dx;
   for (int k = 0; k < solid.body_size(); ++k)
-    check_box(case_file, "solid.body[" + std::to_string(k) + "]", solid.body(k), p.dx);
+    check_box(case_file, "solid.body[" + std::to_string(k) + "]", solid.body(k), least_side);
   for (int k = 0; k < solid.clamp_size(); ++k)
-    check_box(case_file, "solid.clamp[" + std::to_string(k) + "]", solid.clamp(k), p.dx);
+    check_box(case_file, "solid.clamp[" + std::to_string(k) + "]", solid.clamp(k), least_side);
+  require(!solid.has_end_load() || p.model == SolidModel::shell, case_file, "solid.end_load",
+          "applies to solid.model 'shell' only");
 
   p.artificial_stress = read_artificial_stress(case_file);
   p.fracture = read_fracture(case_file, p.dx, p.nu);
@@ -130,8 +136,8 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
                 format_number(mode.tip_speed()) + " m/s");
     p.bending_mode = BendingModeParameters{mode.tip_speed(), mode.root_x(), mode.length()};
   }
-  require(!solid.has_hourglass_control() || p.model == SolidModel::total_lagrangian, case_file,
-          "solid.hourglass_control", "applies to solid.model 'total_lagrangian' only");
+  require(!solid.has_hourglass_control() || p.model != SolidModel::jaumann, case_file,
+          "solid.hourglass_control", "applies to solid.model 'total_lagrangian' or 'shell' only");
   require(!solid.has_hourglass_control() || solid.hourglass_control() >= 0.0, case_file,
           "solid.hourglass_control",
           "must not be negative (0 turns it off), got " + format_number(solid.hourglass_control()));
@@ -161,11 +167,27 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
 }
 
 const char* model_name(SolidModel model) {
-  return model == SolidModel::total_lagrangian ? "total_lagrangian" : "jaumann";
+  switch (model) {
+    case SolidModel::total_lagrangian:
+      return "total_lagrangian";
+    case SolidModel::shell:
+      return "shell";
+    case SolidModel::jaumann:
+      break;
+  }
+  return "jaumann";
 }
 
 const char* model_executable(SolidModel model) {
-  return model == SolidModel::total_lagrangian ? "cosph-solid-tl" : "cosph-solid";
+  switch (model) {
+    case SolidModel::total_lagrangian:
+      return "cosph-solid-tl";
+    case SolidModel::shell:
+      return "cosph-solid-shell";
+    case SolidModel::jaumann:
+      break;
+  }
+  return "cosph-solid";
 }
 
 void require_model(const sph::CaseFile& case_file, const SolidParameters& parameters,

@@ -50,6 +50,7 @@ inline constexpr double kDefaultHourglassControl = 5.0;
 enum class SolidModel {
   jaumann,           // cosph-solid: Gray, Monaghan & Swift 2001, Jaumann stress rate
   total_lagrangian,  // cosph-solid-tl: total-Lagrangian SPH, St Venant-Kirchhoff
+  shell,             // cosph-solid-shell: a Reissner-Mindlin line on a thin body's mid-line
 };
 
 // How the Jaumann solid takes its velocity gradient (solid.velocity_gradient).

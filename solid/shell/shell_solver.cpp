@@ -1,0 +1,196 @@
+#include "shell_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+
+#include "reissner_beam.hpp"
+#include "sphcore/pair_terms.hpp"
+#include "sphcore/runaway_error.hpp"
+
+namespace cosph::solid::shell {
+
+namespace {
+
+const SolidParameters& checked(const sph::CaseFile& case_file, const SolidParameters& parameters) {
+  require_model(case_file, parameters, SolidModel::shell);
+  sph::require(!parameters.fracture.enabled, case_file, "solid.fracture.enabled",
+               "von Mises failure is not implemented for solid.model 'shell'");
+  return parameters;
+}
+
+double hourglass_alpha(const sph::CaseFile& case_file) {
+  const auto& solid = case_file.config.solid();
+  return solid.has_hourglass_control() ? solid.hourglass_control() : kDefaultShellHourglassControl;
+}
+
+// The end particle farther from every clamped particle (the last one when
+// nothing is clamped).
+std::optional<EndLoad> read_end_load(const sph::CaseFile& case_file, const ShellParticles& P) {
+  const auto& solid = case_file.config.solid();
+  if (!solid.has_end_load()) return std::nullopt;
+  const auto& load = solid.end_load();
+  sph::require(load.ramp_time() >= 0.0, case_file, "solid.end_load.ramp_time",
+               "must not be negative, got " + sph::format_number(load.ramp_time()) + " s");
+  const int last = static_cast<int>(P.size()) - 1;
+  auto distance_to_clamp = [&](int i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < P.size(); ++k)
+      if (P.clamped[k]) nearest = std::min(nearest, std::abs(P.S[k] - P.S[i]));
+    return nearest;
+  };
+  const bool at_start = distance_to_clamp(0) > distance_to_clamp(last);
+  return EndLoad{Vec2(load.force().x(), load.force().y()), load.ramp_time(), at_start ? 0 : last};
+}
+
+}  // namespace
+
+Vec2 EndLoad::at(double time) const {
+  if (time >= ramp_time) return force;
+  return 0.5 * (1.0 - std::cos(std::numbers::pi * time / ramp_time)) * force;
+}
+
+ShellSolver::ShellSolver(const sph::CaseFile& case_file, const SolidParameters& parameters)
+    : parameters_(checked(case_file, parameters)),
+      line_(read_shell_line(case_file, parameters.dx)),
+      forces_{ShellSection::of(line_.thickness, parameters.rho0, parameters.E, parameters.nu),
+              line_.phi0(), hourglass_alpha(case_file), line_.ds},
+      particles_(build_shell(case_file, parameters, line_, forces_.section)),
+      end_load_(read_end_load(case_file, particles_)) {
+  if (parameters_.tip_gauge)
+    tip_ids_ = tip_gauge_ids(particles_.id, particles_.X, *parameters_.tip_gauge, line_.ds);
+  update();
+}
+
+void ShellSolver::update() {
+  ShellParticles& P = particles_;
+  compute_strains(P, forces_);
+  compute_accelerations(P, forces_);
+  // The end particle sits on the free end: the load acts on it.
+  if (end_load_ && !P.clamped[end_load_->particle])
+    P.a[end_load_->particle] += end_load_->at(time_) / P.m[end_load_->particle];
+}
+
+sph::StepLimits ShellSolver::step_limits() const {
+  const ShellParticles& P = particles_;
+  double v_max = 0.0, a_max = 0.0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    v_max = std::max(v_max, P.v[i].norm());
+    a_max = std::max(a_max, P.a[i].norm());
+  }
+  sph::StepLimits limits = sph::step_limits(parameters_.run.cfl, parameters_.h,
+                                            forces_.section.sound_speed(), v_max, a_max, 0.0);
+  limits.sound = std::min(limits.sound, parameters_.run.cfl / forces_.section.rotation_frequency());
+  return limits;
+}
+
+void ShellSolver::begin_step(double dt) {
+  ShellParticles& P = particles_;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.clamped[i]) continue;
+    P.v[i] += (0.5 * dt) * (P.a[i] + P.external_a[i]);
+    P.omega[i] += (0.5 * dt) * (P.alpha[i] + P.external_alpha[i]);
+    P.x[i] += dt * P.v[i];
+    P.theta[i] += dt * P.omega[i];
+  }
+  time_ += dt;  // the forces of the new state act at the new time (the end load's ramp)
+  update();
+  time_ -= dt;
+  check_state();
+}
+
+void ShellSolver::end_step(double dt) {
+  ShellParticles& P = particles_;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (P.clamped[i]) continue;
+    P.v[i] += (0.5 * dt) * (P.a[i] + P.external_a[i]);
+    P.omega[i] += (0.5 * dt) * (P.alpha[i] + P.external_alpha[i]);
+  }
+  time_ += dt;
+  ++steps_;
+  check_state();
+}
+
+void ShellSolver::collect_interface(const sph::Region& region, sph::InterfaceParticles& out) {
+  faces_.collect(particles_, forces_.section, forces_.phi0, parameters_.h, region, out);
+}
+
+void ShellSolver::set_interface_accelerations(const std::vector<Vec2>& accelerations) {
+  faces_.scatter(accelerations, particles_);
+}
+
+sph::Region ShellSolver::interaction_bounds() const {
+  const ShellParticles& P = particles_;
+  sph::Region bounds;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    for (const int side : {+1, -1})
+      bounds.include(P.x[i] + ShellFaces::offset(forces_.section, forces_.phi0 + P.theta[i], side));
+  return bounds;
+}
+
+std::vector<sph::Gauge> ShellSolver::gauge_values() const {
+  const ShellParticles& P = particles_;
+  SolidGauges g{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0};
+  const Vec2 tip = mean_displacement(P.id, P.x, P.X, tip_ids_);
+  g.tip_dx = tip.x();
+  g.tip_dy = tip.y();
+  const double t = forces_.section.thickness;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    g.kinetic_energy += 0.5 * (P.m[i] * P.v[i].squaredNorm() + P.J[i] * P.omega[i] * P.omega[i]);
+    g.max_speed = std::max(g.max_speed, P.v[i].norm());
+    g.elastic_energy += P.V[i] * P.strain_energy[i];
+    // The outer fibres' axial stress, uniaxial in the section's plane.
+    const double fibre = std::abs(P.N[i]) / t + 6.0 * std::abs(P.M[i]) / (t * t);
+    g.max_von_mises =
+        std::max(g.max_von_mises, sph::von_mises(sph::Mat2{{fibre, 0.0}, {0.0, 0.0}}));
+  }
+  double rotation = 0.0;  // mean rotation of the tip gauge's particles
+  for (const int id : tip_ids_) rotation += P.theta[static_cast<std::size_t>(id)];
+  if (!tip_ids_.empty()) rotation /= static_cast<double>(tip_ids_.size());
+  std::vector<sph::Gauge> values = named_gauges(g);
+  values.push_back({"tip_rotation", "rad", rotation});
+  return values;
+}
+
+void ShellSolver::check_state() const {
+  const ShellParticles& P = particles_;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const double eps = P.N[i] / forces_.section.EA();
+    const char* reason = nullptr;
+    if (!P.x[i].allFinite() || !P.v[i].allFinite() || !std::isfinite(P.theta[i]) ||
+        !std::isfinite(P.omega[i]))
+      reason = "its state is not finite";
+    else if (P.v[i].norm() > P.c[i])
+      reason = "it moves faster than the shell's axial sound speed";
+    else if (!(std::abs(eps) < 0.5))
+      reason = "its axial strain left (-0.5, 0.5) (far outside the linear law)";
+    if (reason == nullptr) continue;
+    std::ostringstream message;
+    message << "shell particle " << P.id[i] << " at (" << P.x[i].x() << ", " << P.x[i].y()
+            << ") m, t = " << time_ << " s, step " << steps_ << ": " << reason << " (speed "
+            << P.v[i].norm() << " m/s, sound speed " << P.c[i]
+            << " m/s); the run has blown up: try a smaller run.cfl";
+    throw sph::RunawayError(message.str());
+  }
+}
+
+sph::Snapshot ShellSolver::snapshot() const {
+  const ShellParticles& P = particles_;
+  std::vector<int> clamped(P.clamped.begin(), P.clamped.end());
+  std::vector<double> density(P.size(), forces_.section.rho);
+  sph::Snapshot snapshot(P.x);
+  snapshot.add_scalar("id", P.id);
+  snapshot.add_vector("velocity", P.v);
+  snapshot.add_scalar("density", density);
+  snapshot.add_scalar("rotation", P.theta);
+  snapshot.add_scalar("angular_velocity", P.omega);
+  snapshot.add_scalar("axial_force", P.N);
+  snapshot.add_scalar("shear_force", P.Q);
+  snapshot.add_scalar("bending_moment", P.M);
+  snapshot.add_scalar("clamped", clamped);
+  return snapshot;
+}
+
+}  // namespace cosph::solid::shell
