@@ -11,6 +11,8 @@
 #include "participant/protocol.hpp"
 #include "sphcore/run_control.hpp"
 #include "sphcore/timeseries_writer.hpp"
+#include "sphcore/region.hpp"
+#include "sphcore/gauge.hpp"
 
 namespace cosph::coupler {
 

@@ -27,6 +27,8 @@
 #include "sphcore/case_file.hpp"
 #include "sphcore/solver_cli.hpp"
 #include "sphcore/time_step.hpp"
+#include "sphcore/region.hpp"
+#include "sphcore/gauge.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "momentum.hpp"
+#include "total_stress.hpp"
 #include "sphcore/ordered_shares.hpp"
 #include "sphcore/permutation.hpp"
 #include "sphcore/types.hpp"

@@ -13,6 +13,8 @@
 #include "sphcore/permutation.hpp"
 #include "sphcore/runaway_error.hpp"
 #include "sphcore/runaway_screen.hpp"
+#include "sphcore/region.hpp"
+#include "sphcore/gauge.hpp"
 
 namespace cosph::fluid {
 

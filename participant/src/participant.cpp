@@ -6,6 +6,8 @@
 
 #include "participant/protocol.hpp"
 #include "sphcore/run_control.hpp"
+#include "sphcore/region.hpp"
+#include "sphcore/gauge.hpp"
 
 namespace cosph::coupling {
 

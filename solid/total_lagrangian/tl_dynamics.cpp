@@ -2,7 +2,7 @@
 
 #include "hourglass_control.hpp"
 #include "sphcore/outer_product_sum.hpp"
-#include "sphcore/pair_terms.hpp"
+#include "sphcore/artificial_viscosity.hpp"
 #include "sphcore/parallel.hpp"
 #include "st_venant_kirchhoff.hpp"
 

@@ -16,6 +16,8 @@
 #include "participant/coupled_run.hpp"
 #include "participant/protocol.hpp"
 #include "sphcore/time_step.hpp"
+#include "sphcore/region.hpp"
+#include "sphcore/gauge.hpp"
 
 namespace {
 

@@ -11,6 +11,7 @@
 #include "fluid_solver.hpp"
 #include "sphcore/case_file.hpp"
 #include "test_support.hpp"
+#include "sphcore/gauge.hpp"
 
 namespace cosph::fluid {
 namespace {

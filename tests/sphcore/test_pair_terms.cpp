@@ -7,7 +7,9 @@
 #include <random>
 
 #include "sphcore/kernel.hpp"
-#include "sphcore/pair_terms.hpp"
+#include "sphcore/artificial_viscosity.hpp"
+#include "sphcore/momentum_bracket.hpp"
+#include "sphcore/von_mises.hpp"
 
 namespace {
 

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "sphcore/interface_particles.hpp"
+#include "sphcore/region.hpp"
+#include "sphcore/gauge.hpp"
 
 namespace cosph::coupling {
 

@@ -10,6 +10,7 @@
 #include "sphcore/case_file.hpp"
 #include "sphcore/solver_cli.hpp"
 #include "sphcore/standalone_run.hpp"
+#include "sphcore/gauge.hpp"
 
 namespace cosph::coupling {
 
