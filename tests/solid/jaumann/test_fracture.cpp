@@ -210,7 +210,7 @@ TEST(BrokenPartGauge, CentreOfMassOfTheFreeParticlesBelowTheHeight) {
   P.add(2, Vec2(5.0, 0.0), 1000, 1.0, 1, 1, 1, true);   // clamped: not counted
   P.add(3, Vec2(7.0, 2.0), 1000, 1.0, 1, 1, 1, false);  // starts above: not counted
   P.x[1] = Vec2(2.0, 1.0);                              // counted where it is now
-  const Vec2 centre = broken_part_centre(P, 1.0);
+  const Vec2 centre = broken_part_centre(P.x0, P.x, P.m, P.clamped, 1.0);
   EXPECT_NEAR(centre.x(), (0.0 + 3.0 * 2.0) / 4.0, 1e-15);
   EXPECT_NEAR(centre.y(), 3.0 / 4.0, 1e-15);
 }
