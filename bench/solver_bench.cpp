@@ -15,8 +15,8 @@
 
 #include "fluid_parameters.hpp"
 #include "fluid_solver.hpp"
-#include "solid_parameters.hpp"
 #include "jaumann_solver.hpp"
+#include "solid_parameters.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/kernel.hpp"
 #include "sphcore/solver_cli.hpp"
@@ -114,7 +114,8 @@ Measurement time_solid(const std::string& case_path, double spacing, int threads
   omp_set_num_threads(threads);
   const sph::CaseFile case_file =
       sph::load_case(case_path, {"solid.spacing=" + std::to_string(spacing)});
-  cosph::solid::jaumann::JaumannSolver solver(case_file, cosph::solid::read_solid_parameters(case_file));
+  cosph::solid::jaumann::JaumannSolver solver(case_file,
+                                              cosph::solid::read_solid_parameters(case_file));
   for (int s = 0; s < steps / 10 + 1; ++s) solver.step(solver.step_limits().smallest());
   const std::vector<double> start = clock_seconds();
   for (int s = 0; s < steps; ++s) solver.step(solver.step_limits().smallest());

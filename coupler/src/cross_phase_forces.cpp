@@ -3,10 +3,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sphcore/cell_grid.hpp"
-#include "sphcore/kernel.hpp"
 #include "sphcore/artificial_viscosity.hpp"
+#include "sphcore/cell_grid.hpp"
 #include "sphcore/continuity_pair.hpp"
+#include "sphcore/kernel.hpp"
 #include "sphcore/momentum_bracket.hpp"
 #include "sphcore/wall_pressure.hpp"
 

@@ -25,10 +25,10 @@
 #include "participant/coupled_run.hpp"
 #include "participant/protocol.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/gauge.hpp"
+#include "sphcore/region.hpp"
 #include "sphcore/solver_cli.hpp"
 #include "sphcore/time_step.hpp"
-#include "sphcore/region.hpp"
-#include "sphcore/gauge.hpp"
 
 namespace {
 

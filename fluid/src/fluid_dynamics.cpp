@@ -5,9 +5,9 @@
 #include <cstdint>
 
 #include "density_diffusion.hpp"
-#include "sphcore/kernel.hpp"
 #include "sphcore/artificial_viscosity.hpp"
 #include "sphcore/continuity_pair.hpp"
+#include "sphcore/kernel.hpp"
 #include "sphcore/momentum_bracket.hpp"
 #include "sphcore/parallel.hpp"
 #include "sphcore/renormalisation.hpp"
@@ -177,8 +177,8 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
       const auto bracket_times_gradient_of = [&](int j, double F_ij) {
         const Vec2 x_ij = x_i - P.x[j];
         const double Pi_ij = Pi_of(x_ij, v_i - P.v[j], 0.5 * (rho_i + P.rho[j]));
-        return sph::bracket_times_gradient(sigma_i, P.sigma[j], inverse_rho_i, P.inverse_rho[j], Pi_ij,
-                                      F_ij * x_ij);
+        return sph::bracket_times_gradient(sigma_i, P.sigma[j], inverse_rho_i, P.inverse_rho[j],
+                                           Pi_ij, F_ij * x_ij);
       };
       const auto neighbours = pairs.neighbours(i);
       const auto F = pairs.gradient_factors(i);
@@ -224,7 +224,7 @@ std::vector<Vec2> forces_on_walls(const FluidParticles& P, const sph::NeighbourL
       const double Pi_ij = Pi_of(x_ij, P.v[i] - P.v[j], 0.5 * (P.rho[i] + P.rho[j]));
       force[P.wall_of(j)] -= P.m[i] * P.m[j] *
                              sph::bracket_times_gradient(P.sigma[i], P.sigma[j], P.inverse_rho[i],
-                                                    P.inverse_rho[j], Pi_ij, F[k] * x_ij);
+                                                         P.inverse_rho[j], Pi_ij, F[k] * x_ij);
     }
   }
   return force;

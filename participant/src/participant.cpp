@@ -5,9 +5,9 @@
 #include <zmq.hpp>
 
 #include "participant/protocol.hpp"
-#include "sphcore/run_control.hpp"
-#include "sphcore/region.hpp"
 #include "sphcore/gauge.hpp"
+#include "sphcore/region.hpp"
+#include "sphcore/run_control.hpp"
 
 namespace cosph::coupling {
 

@@ -9,9 +9,9 @@
 
 #include "solid_parameters.hpp"
 #include "sphcore/parallel.hpp"
+#include "sphcore/region.hpp"
 #include "sphcore/time_step.hpp"
 #include "wall_contact.hpp"
-#include "sphcore/region.hpp"
 
 namespace cosph::solid {
 

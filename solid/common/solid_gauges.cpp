@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <limits>
 
-
 namespace cosph::solid {
 
 std::vector<int> tip_gauge_ids(const std::vector<int>& id, const std::vector<Vec2>& x0,

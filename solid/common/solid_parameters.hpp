@@ -54,7 +54,8 @@ enum class SolidModel {
 
 // How the Jaumann solid takes its velocity gradient (solid.velocity_gradient).
 enum class VelocityGradient {
-  linear,     // renormalised kernel gradient (docs/physics.md, "Jaumann solid"), exact for linear fields; the default
+  linear,     // renormalised kernel gradient (docs/physics.md, "Jaumann solid"), exact for linear
+              // fields; the default
   quadratic,  // least-squares fit exact for quadratic fields (sphcore/quadratic_gradient.hpp):
               // for small deformations; it is not paired with the stress divergence as the
               // linear one is, and a large-amplitude plate blows up with it

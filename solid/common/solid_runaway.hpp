@@ -18,8 +18,8 @@ namespace cosph::solid {
 template <class Particles, class Screen, class Reason, class Details>
 void stop_if_run_away(const Particles& P, double time, long steps, Screen&& passes_screen,
                       Reason&& reason, Details&& details) {
-  const bool may_have_run_away = sph::parallel_any(
-      P.size(), sph::kTeamAtAnySize, [&](long i) { return !passes_screen(i); });
+  const bool may_have_run_away =
+      sph::parallel_any(P.size(), sph::kTeamAtAnySize, [&](long i) { return !passes_screen(i); });
   if (!may_have_run_away) return;
   for (std::size_t i = 0; i < P.size(); ++i) {
     const char* why = reason(i);

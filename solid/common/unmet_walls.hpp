@@ -20,8 +20,8 @@
 #include <string>
 #include <vector>
 
-#include "sphcore/region.hpp"
 #include "sphcore/parallel.hpp"
+#include "sphcore/region.hpp"
 #include "sphcore/runaway_error.hpp"
 #include "sphcore/types.hpp"
 

@@ -10,8 +10,8 @@
 // Between them the solver turns rho and s into the stress (update_stress).
 #pragma once
 
-#include "solid_parameters.hpp"
 #include "jaumann_particles.hpp"
+#include "solid_parameters.hpp"
 #include "sphcore/neighbour_list.hpp"
 
 namespace cosph::solid::jaumann {

@@ -6,19 +6,19 @@
 
 #include "artificial_stress.hpp"
 #include "hooke_pressure.hpp"
-#include "kick_drift_kick.hpp"
 #include "jaumann_dynamics.hpp"
+#include "kick_drift_kick.hpp"
+#include "solid_runaway.hpp"
 #include "solid_scene.hpp"
+#include "solid_snapshot.hpp"
+#include "sphcore/gauge.hpp"
 #include "sphcore/kernel.hpp"
 #include "sphcore/parallel.hpp"
 #include "sphcore/permutation.hpp"
+#include "sphcore/region.hpp"
 #include "sphcore/runaway_screen.hpp"
-#include "solid_runaway.hpp"
-#include "solid_snapshot.hpp"
 #include "unmet_walls.hpp"
 #include "von_mises_failure.hpp"
-#include "sphcore/region.hpp"
-#include "sphcore/gauge.hpp"
 
 namespace cosph::solid::jaumann {
 

@@ -18,16 +18,16 @@
 
 #include <vector>
 
+#include "jaumann_particles.hpp"
 #include "solid_gauges.hpp"
 #include "solid_interface.hpp"
 #include "solid_parameters.hpp"
-#include "jaumann_particles.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/cell_grid.hpp"
-#include "sphcore/interface_particles.hpp"
-#include "sphcore/region.hpp"
 #include "sphcore/gauge.hpp"
+#include "sphcore/interface_particles.hpp"
 #include "sphcore/neighbour_list.hpp"
+#include "sphcore/region.hpp"
 #include "sphcore/snapshot_writer.hpp"
 #include "sphcore/time_step.hpp"
 

@@ -2,8 +2,8 @@
 // stress rate (Gray, Monaghan & Swift 2001), for cases with solid.model
 // "jaumann" (the default). Runs a case alone when the case has no fluid; coupled runs come
 // through the coupler.
-#include "solid_program.hpp"
 #include "jaumann_solver.hpp"
+#include "solid_program.hpp"
 
 int main(int argc, char** argv) {
   using cosph::solid::SolidParameters;

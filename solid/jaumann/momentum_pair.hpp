@@ -7,10 +7,10 @@
 
 #include <cmath>
 
-#include "solid_parameters.hpp"
 #include "jaumann_particles.hpp"
-#include "sphcore/kernel.hpp"
+#include "solid_parameters.hpp"
 #include "sphcore/artificial_viscosity.hpp"
+#include "sphcore/kernel.hpp"
 #include "sphcore/momentum_bracket.hpp"
 
 namespace cosph::solid::jaumann {

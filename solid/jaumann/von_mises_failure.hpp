@@ -8,8 +8,8 @@
 
 #include <algorithm>
 
-#include "sphcore/von_mises.hpp"
 #include "sphcore/types.hpp"
+#include "sphcore/von_mises.hpp"
 
 namespace cosph::solid::jaumann {
 

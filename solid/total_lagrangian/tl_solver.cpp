@@ -6,13 +6,13 @@
 
 #include "kick_drift_kick.hpp"
 #include "reference_configuration.hpp"
-#include "sphcore/parallel.hpp"
-#include "sphcore/runaway_screen.hpp"
 #include "solid_runaway.hpp"
 #include "solid_snapshot.hpp"
-#include "unmet_walls.hpp"
-#include "sphcore/region.hpp"
 #include "sphcore/gauge.hpp"
+#include "sphcore/parallel.hpp"
+#include "sphcore/region.hpp"
+#include "sphcore/runaway_screen.hpp"
+#include "unmet_walls.hpp"
 
 namespace cosph::solid::tl {
 
@@ -77,8 +77,7 @@ sph::Region TLSolver::interaction_bounds() const {
 
 SolidGauges TLSolver::gauges() const {
   const TLParticles& P = particles_;
-  return measure(P, P.X, tip_ids_,
-                 [&P](std::size_t i) { return P.V0[i] * P.strain_energy[i]; });
+  return measure(P, P.X, tip_ids_, [&P](std::size_t i) { return P.V0[i] * P.strain_energy[i]; });
 }
 
 std::vector<sph::Gauge> TLSolver::gauge_values() const {

@@ -1,10 +1,10 @@
 // The total-Lagrangian SPH solid (cosph-solid-tl; docs/physics.md,
 // "Total-Lagrangian solid"): an alternative to the Jaumann solid of
-// solid/jaumann that needs no artificial stress. Stress follows from the deformation gradient F against
-// the fixed reference configuration (reference_configuration.hpp), through
-// St Venant-Kirchhoff elasticity (st_venant_kirchhoff.hpp), with hourglass
-// control (hourglass_control.hpp). References: Bonet & Lok 1999 (CMAME 180),
-// Vignjevic, Reveles & Campbell 2006 (CMAME 195), Ganzenmueller 2015 (CMAME 286).
+// solid/jaumann that needs no artificial stress. Stress follows from the deformation gradient F
+// against the fixed reference configuration (reference_configuration.hpp), through St
+// Venant-Kirchhoff elasticity (st_venant_kirchhoff.hpp), with hourglass control
+// (hourglass_control.hpp). References: Bonet & Lok 1999 (CMAME 180), Vignjevic, Reveles & Campbell
+// 2006 (CMAME 195), Ganzenmueller 2015 (CMAME 286).
 //
 // Step from t to t + dt, with a known at t (kick-drift-kick, one force
 // evaluation per step; the elastic force depends on positions only, so this
@@ -21,9 +21,9 @@
 #include "solid_interface.hpp"
 #include "solid_parameters.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/gauge.hpp"
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/region.hpp"
-#include "sphcore/gauge.hpp"
 #include "sphcore/snapshot_writer.hpp"
 #include "sphcore/time_step.hpp"
 #include "tl_dynamics.hpp"

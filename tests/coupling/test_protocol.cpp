@@ -6,8 +6,8 @@
 #include <random>
 
 #include "participant/protocol.hpp"
-#include "sphcore/region.hpp"
 #include "sphcore/gauge.hpp"
+#include "sphcore/region.hpp"
 
 namespace {
 

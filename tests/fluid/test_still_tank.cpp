@@ -10,8 +10,8 @@
 #include "fluid_parameters.hpp"
 #include "fluid_solver.hpp"
 #include "sphcore/case_file.hpp"
-#include "test_support.hpp"
 #include "sphcore/gauge.hpp"
+#include "test_support.hpp"
 
 namespace cosph::fluid {
 namespace {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <random>
 
-#include "sphcore/kernel.hpp"
 #include "sphcore/artificial_viscosity.hpp"
+#include "sphcore/kernel.hpp"
 #include "sphcore/momentum_bracket.hpp"
 #include "sphcore/von_mises.hpp"
 

@@ -29,12 +29,12 @@
 
 #include "participant/coupled_solver.hpp"
 #include "participant/participant.hpp"
+#include "sphcore/gauge.hpp"
+#include "sphcore/region.hpp"
 #include "sphcore/run_control.hpp"
 #include "sphcore/run_parameters.hpp"
 #include "sphcore/runaway_error.hpp"
 #include "sphcore/snapshot_writer.hpp"
-#include "sphcore/region.hpp"
-#include "sphcore/gauge.hpp"
 
 namespace cosph::coupling {
 

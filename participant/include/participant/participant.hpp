@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "sphcore/gauge.hpp"
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/region.hpp"
-#include "sphcore/gauge.hpp"
 
 namespace cosph::coupling {
 

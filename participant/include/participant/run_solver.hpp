@@ -8,9 +8,9 @@
 
 #include "participant/coupled_run.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/gauge.hpp"
 #include "sphcore/solver_cli.hpp"
 #include "sphcore/standalone_run.hpp"
-#include "sphcore/gauge.hpp"
 
 namespace cosph::coupling {
 

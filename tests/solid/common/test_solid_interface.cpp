@@ -4,8 +4,8 @@
 
 #include <vector>
 
-#include "solid_interface.hpp"
 #include "jaumann_particles.hpp"
+#include "solid_interface.hpp"
 #include "sphcore/region.hpp"
 
 namespace cosph::solid {

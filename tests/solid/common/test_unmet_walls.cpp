@@ -6,8 +6,8 @@
 #include <cmath>
 #include <string>
 
-#include "solid_parameters.hpp"
 #include "jaumann_solver.hpp"
+#include "solid_parameters.hpp"
 #include "solid_test_cases.hpp"
 
 namespace cosph::solid {

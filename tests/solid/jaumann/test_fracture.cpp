@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
-#include "solid_gauges.hpp"
 #include "jaumann_solver.hpp"
+#include "solid_gauges.hpp"
 #include "solid_test_cases.hpp"
+#include "sphcore/region.hpp"
 #include "sphcore/von_mises.hpp"
 #include "wall_contact.hpp"
-#include "sphcore/region.hpp"
 
 namespace cosph::solid::jaumann {
 namespace {

@@ -14,11 +14,11 @@
 #include <vector>
 
 #include "bending_mode.hpp"
+#include "jaumann_dynamics.hpp"
 #include "jaumann_rate.hpp"
+#include "jaumann_solver.hpp"
 #include "momentum_pair.hpp"
 #include "runaway_spoils.hpp"
-#include "jaumann_dynamics.hpp"
-#include "jaumann_solver.hpp"
 #include "solid_test_cases.hpp"
 #include "sphcore/kernel.hpp"
 #include "sphcore/permutation.hpp"
@@ -300,8 +300,8 @@ TEST(JaumannSolver, EveryKindOfRunawayStopsTheStepAndNothingElseDoes) {
        },
        true},
       {"s not finite", [&](JaumannParticles& P, std::size_t i) { P.s[i](1, 0) = nan; }, true},
-      {"rho below 0.5 rho0", [&](JaumannParticles& P, std::size_t i) { P.rho[i] = 0.49 * par.rho0; },
-       true},
+      {"rho below 0.5 rho0",
+       [&](JaumannParticles& P, std::size_t i) { P.rho[i] = 0.49 * par.rho0; }, true},
       {"rho above 2 rho0", [&](JaumannParticles& P, std::size_t i) { P.rho[i] = 2.01 * par.rho0; },
        true},
       {"faster than c",

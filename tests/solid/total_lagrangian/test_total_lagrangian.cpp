@@ -21,10 +21,10 @@
 #include "reference_configuration.hpp"
 #include "runaway_spoils.hpp"
 #include "solid_test_cases.hpp"
+#include "sphcore/gauge.hpp"
 #include "st_venant_kirchhoff.hpp"
 #include "tl_dynamics.hpp"
 #include "tl_solver.hpp"
-#include "sphcore/gauge.hpp"
 
 namespace cosph::solid::tl {
 namespace {
