@@ -171,7 +171,7 @@ class LauncherTest(unittest.TestCase):
         rc, out, err = self.run_case(FAKE_PLAN=THREE, FAKE_BUSY="cosph-solid-jaumann")
         self.assertEqual(rc, 0, err)
         match = re.search(r"cosph: CPU time: coupler ([\d.]+) s, fluid ([\d.]+) s, "
-                          r"solid ([\d.]+) s", out)
+                          r"solid-jaumann ([\d.]+) s", out)
         self.assertIsNotNone(match, out)
         coupler, fluid, solid = map(float, match.groups())
         self.assertGreaterEqual(solid, 0.45)
@@ -315,7 +315,7 @@ class LauncherTest(unittest.TestCase):
                                    FAKE_GRANDCHILD=ALL)
         self.assertLess(time.monotonic() - start, 4.0)
         self.assertEqual(rc, 3)
-        self.assertIn("cosph: cosph-solid-jaumann failed (exit code 3): error: solid diverged", err)
+        self.assertIn("cosph: cosph-solid-jaumann failed (exit code 3): error: solid-jaumann diverged", err)
         self.assertNotIn("cosph-fluid failed", err)   # stopped by us, not a failure
         self.assert_all_gone(6)   # three fakes and the sleep each one started
 
