@@ -29,7 +29,7 @@ import re
 import cosph_results as cr
 import stability_map as sm
 
-SOLIDS = {"jaumann": "Jaumann (`cosph-solid`)",
+SOLIDS = {"jaumann": "Jaumann (`cosph-solid-jaumann`)",
           "total_lagrangian": "total-Lagrangian (`cosph-solid-tl`)"}
 ALONE_CFLS = [0.3, 0.6, 1.0, 2.0, 4.0, 8.0]   # 0.3: the case's; 8: the largest run.cfl accepted
 ALONE_END_S = 0.05                            # s: a fifth of a period, thousands of steps

@@ -15,7 +15,7 @@ last good snapshot (solid_last_good.h5) is drawn and the error is reported.
 
 Usage: scripts/tensile_instability.py [--out DIR] [--tip-speed V] [--end-time T] [--spacing DX]
                                      [--plot-only]
-COSPH_BIN names the folder of cosph-solid (default build/bin).
+COSPH_BIN names the folder of cosph-solid-jaumann (default build/bin).
 """
 import argparse
 import glob
@@ -36,7 +36,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "oscillating_plate.pbtxt"
-SOLVER = pathlib.Path(os.environ.get("COSPH_BIN", ROOT / "build" / "bin")) / "cosph-solid"
+SOLVER = pathlib.Path(os.environ.get("COSPH_BIN", ROOT / "build" / "bin")) / "cosph-solid-jaumann"
 
 
 RUNS = [  # (velocity gradient, artificial stress)
@@ -63,7 +63,7 @@ def run(out, gradient, artificial_stress, args):
     result = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     wall = time.monotonic() - start
     if result.returncode not in (0, 1):
-        sys.exit(f"cosph-solid failed unexpectedly (exit {result.returncode}):\n{result.stderr}")
+        sys.exit(f"cosph-solid-jaumann failed unexpectedly (exit {result.returncode}):\n{result.stderr}")
     error = result.stderr.strip() if result.returncode == 1 else ""
     if error:
         print("  stopped:", error)

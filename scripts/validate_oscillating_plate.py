@@ -2,7 +2,7 @@
 """Oscillating plate (Gray, Monaghan & Swift 2001): the cantilever's period
 against thin-plate theory at three resolutions.
 
-Runs cases/oscillating_plate.pbtxt through build/bin/cosph-solid with 6, 10
+Runs cases/oscillating_plate.pbtxt through build/bin/cosph-solid-jaumann with 6, 10
 and 16 (the case's default) particles across the thickness, once with each
 velocity gradient (solid.velocity_gradient: "quadratic", the default, first
 and plotted; "linear", the solver's default), measures the period of tip_dy from its zero
@@ -39,7 +39,7 @@ import cosph_results as cr  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "oscillating_plate.pbtxt"
-EXECUTABLES = {"jaumann": "cosph-solid", "total_lagrangian": "cosph-solid-tl"}
+EXECUTABLES = {"jaumann": "cosph-solid-jaumann", "total_lagrangian": "cosph-solid-tl"}
 
 # The case's plate (cases/oscillating_plate.pbtxt); theory uses the same numbers.
 E, NU, RHO, H, L = 2.0e6, 0.3975, 1000.0, 0.02, 0.2

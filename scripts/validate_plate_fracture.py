@@ -218,7 +218,7 @@ def main():
         "(spurious, most likely the corners' kernel renormalisation falling back to the "
         "identity), would fail before the band at any sigma_y the band can reach. The broken "
         "piece rests on the floor through solid.walls (an inelastic, frictionless contact, "
-        "solid/src/wall_contact.hpp); without it the piece fell through the floor.")
+        "solid/common/wall_contact.hpp); without it the piece fell through the floor.")
     path = cr.write_table(CASE, ["run", "reached t (s)", "first failure t (s)", "piece free by t (s)",
                                  "failed at end", "broken_x at end (m)", "broken_y at end (m)",
                                  "wall time (s)", "water left as spray"], rows,

@@ -4,7 +4,7 @@
 // prints the executables in start order, one per line: "cosph-fluid" for
 // water alone, the solid's program for a solid alone, "cosph-coupler",
 // "cosph-fluid" and the solid's program for a coupled case. The solid's
-// program is "cosph-solid" or "cosph-solid-tl" after solid.model, or the
+// program is "cosph-solid-jaumann" or "cosph-solid-tl" after solid.model, or the
 // absolute path of the program solid.executable names (solid_executable.hpp).
 // A multi-rate coupled case (coupling.max_substeps > 1, the solid at its own
 // step) ends with a line "separate-cores": the launcher then gives each solver

@@ -9,6 +9,8 @@
 #include "common_step.hpp"
 #include "participant/bound_ipc_file.hpp"
 #include "participant/protocol.hpp"
+#include "sphcore/gauge.hpp"
+#include "sphcore/region.hpp"
 #include "sphcore/run_control.hpp"
 #include "sphcore/timeseries_writer.hpp"
 

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sphcore/artificial_viscosity.hpp"
 #include "sphcore/cell_grid.hpp"
+#include "sphcore/continuity_pair.hpp"
 #include "sphcore/kernel.hpp"
-#include "sphcore/pair_terms.hpp"
+#include "sphcore/momentum_bracket.hpp"
 #include "sphcore/wall_pressure.hpp"
 
 namespace cosph::coupler {

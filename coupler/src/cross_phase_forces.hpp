@@ -5,7 +5,7 @@
 // stress_sum, the study's rule (docs/physics.md, "Stress sum"): the
 // momentum sum runs over both phases with each particle's own stress,
 //   m_f a_f += m_f m_s ( (sigma_f + sigma_s) / (rho_f rho_s) - Pi_fs I ) . grad_f W_fs,
-// the same pair term as inside each phase (sphcore/pair_terms.hpp).
+// the same pair term as inside each phase (sphcore/momentum_bracket.hpp, artificial_viscosity.hpp).
 //
 // moving_wall (docs/physics.md, "Moving wall"): the water sees each solid
 // particle as a moving wall particle of the solid's volume V_s = m_s / rho_s,

@@ -26,6 +26,8 @@
 #include "participant/coupling_timeout.hpp"
 #include "participant/protocol.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/gauge.hpp"
+#include "sphcore/region.hpp"
 #include "sphcore/solver_cli.hpp"
 #include "sphcore/time_step.hpp"
 

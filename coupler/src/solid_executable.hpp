@@ -20,7 +20,7 @@ struct ExecutableSearch {
 // The folders of a PATH-like list ("a:b:c"); empty entries are skipped.
 std::vector<std::string> split_search_path(const std::string& path);
 
-// The program for the case's solid: a built-in name ("cosph-solid",
+// The program for the case's solid: a built-in name ("cosph-solid-jaumann",
 // "cosph-solid-tl", found in the executable folder by the launcher) when
 // solid.executable is absent, else the absolute path of the program it names:
 //   - with a "/": that path, relative to the case file's folder;

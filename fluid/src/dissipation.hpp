@@ -1,6 +1,6 @@
 // Which dissipation the water's sound waves and pressure noise meet
 // (fluid.dissipation, proto/case.proto):
-//   delta_sph  density diffusion with renormalised gradients (continuity.hpp)
+//   delta_sph  density diffusion with renormalised gradients (density_diffusion.hpp)
 //              and Monaghan's artificial viscosity: the default;
 //   fourtakas  density diffusion with the hydrostatic part removed
 //              (hydrostatic_density_diffusion.hpp) and Monaghan's viscosity;
@@ -9,7 +9,7 @@
 #pragma once
 
 #include "riemann_dissipation.hpp"
-#include "sphcore/pair_terms.hpp"
+#include "sphcore/artificial_viscosity.hpp"
 
 namespace cosph::fluid {
 

@@ -4,11 +4,12 @@
 #include <cmath>
 #include <cstdint>
 
-#include "continuity.hpp"
+#include "density_diffusion.hpp"
+#include "dissipation.hpp"
 #include "hydrostatic_density_diffusion.hpp"
-#include "momentum.hpp"
+#include "sphcore/continuity_pair.hpp"
 #include "sphcore/kernel.hpp"
-#include "sphcore/pair_terms.hpp"
+#include "sphcore/momentum_bracket.hpp"
 #include "sphcore/parallel.hpp"
 #include "sphcore/renormalisation.hpp"
 #include "sphcore/wall_pressure.hpp"
@@ -59,7 +60,7 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
       const Vec2 grad_W_ij = F[k] * x_ij;
       const double rho_j = P.rho[j], V_j = P.volume[j];
       const Vec2 v_ij = v_i - P.v[j];
-      drho_i += continuity_pair(rho_i, V_j, v_ij, grad_W_ij);
+      drho_i += sph::continuity_pair(rho_i, V_j, v_ij, grad_W_ij);
       if (!P.is_water(j)) {
         wall_in_reach = true;
         continue;
@@ -190,8 +191,8 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
       const auto bracket_times_gradient_of = [&](int j, double F_ij) {
         const Vec2 x_ij = x_i - P.x[j];
         const double Pi_ij = Pi_of(x_ij, v_i - P.v[j], 0.5 * (rho_i + P.rho[j]));
-        return bracket_times_gradient(sigma_i, P.sigma[j], inverse_rho_i, P.inverse_rho[j], Pi_ij,
-                                      F_ij * x_ij);
+        return sph::bracket_times_gradient(sigma_i, P.sigma[j], inverse_rho_i, P.inverse_rho[j],
+                                           Pi_ij, F_ij * x_ij);
       };
       const auto neighbours = pairs.neighbours(i);
       const auto F = pairs.gradient_factors(i);
@@ -236,8 +237,8 @@ std::vector<Vec2> forces_on_walls(const FluidParticles& P, const sph::NeighbourL
       const Vec2 x_ij = P.x[i] - P.x[j];
       const double Pi_ij = Pi_of(x_ij, P.v[i] - P.v[j], 0.5 * (P.rho[i] + P.rho[j]));
       force[P.wall_of(j)] -= P.m[i] * P.m[j] *
-                             bracket_times_gradient(P.sigma[i], P.sigma[j], P.inverse_rho[i],
-                                                    P.inverse_rho[j], Pi_ij, F[k] * x_ij);
+                             sph::bracket_times_gradient(P.sigma[i], P.sigma[j], P.inverse_rho[i],
+                                                         P.inverse_rho[j], Pi_ij, F[k] * x_ij);
     }
   }
   return force;

@@ -6,10 +6,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "momentum.hpp"
 #include "sphcore/ordered_shares.hpp"
 #include "sphcore/permutation.hpp"
 #include "sphcore/types.hpp"
+#include "total_stress.hpp"
 
 namespace cosph::fluid {
 

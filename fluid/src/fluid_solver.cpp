@@ -8,9 +8,11 @@
 
 #include "fluid_dynamics.hpp"
 #include "fluid_scene.hpp"
+#include "sphcore/gauge.hpp"
 #include "sphcore/kernel.hpp"
 #include "sphcore/parallel.hpp"
 #include "sphcore/permutation.hpp"
+#include "sphcore/region.hpp"
 #include "sphcore/runaway_error.hpp"
 #include "sphcore/runaway_screen.hpp"
 

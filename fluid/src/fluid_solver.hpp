@@ -17,8 +17,10 @@
 #include "gauges.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/cell_grid.hpp"
+#include "sphcore/gauge.hpp"
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/neighbour_list.hpp"
+#include "sphcore/region.hpp"
 #include "sphcore/snapshot_writer.hpp"
 #include "sphcore/time_step.hpp"
 

@@ -39,7 +39,7 @@ class HydrostaticDensityDifference {
 };
 
 // One pair's share of the sum, without the factor delta h c0 (as
-// density_diffusion_pair of continuity.hpp): with grad_i W_ij = F_ij x_ij,
+// density_diffusion_pair of density_diffusion.hpp): with grad_i W_ij = F_ij x_ij,
 // psi_ij . grad_i W_ij = -2 (rho_ji^T - rho_ji^H) F_ij.
 inline double hydrostatic_density_diffusion_pair(double rho_i, double rho_j,
                                                  double rho_hydrostatic_ji, double F_ij,

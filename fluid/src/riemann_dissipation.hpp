@@ -9,8 +9,9 @@
 // compression. The continuity and momentum equations take v* and P*:
 //   drho_i/dt = 2 rho_i sum_j V_j (v_i - v*) . grad_i W_ij,
 //   dv_i/dt   = -2 sum_j m_j P* / (rho_i rho_j) grad_i W_ij.
-// Written against the central terms of continuity and momentum.hpp, each is
-// that term plus one dissipative term, which is what lives here.
+// Written against the central terms (sphcore's continuity_pair.hpp and
+// momentum_bracket.hpp), each is that term plus one dissipative term, which
+// is what lives here.
 #pragma once
 
 #include <algorithm>
@@ -33,7 +34,7 @@ inline double riemann_density_dissipation_pair(double rho_i, double V_j, double 
 }
 
 // Momentum's dissipative part as the Pi_ij of the pair's bracket
-// (momentum.hpp: ((sigma_i + sigma_j) / (rho_i rho_j) - Pi_ij I) . grad_i W_ij):
+// (momentum_bracket.hpp: ((sigma_i + sigma_j) / (rho_i rho_j) - Pi_ij I) . grad_i W_ij):
 // the paper's P* in place of (P_i + P_j) / 2 adds
 //   Pi_ij = 2 (rho_i rho_j / (rho_i + rho_j)) beta (U_i - U_j) / (rho_i rho_j)
 //         = beta (U_i - U_j) / rho_bar,   U_i - U_j = -v_ij . x_ij / r_ij.

@@ -5,6 +5,8 @@
 #include <zmq.hpp>
 
 #include "participant/protocol.hpp"
+#include "sphcore/gauge.hpp"
+#include "sphcore/region.hpp"
 #include "sphcore/run_control.hpp"
 
 namespace cosph::coupling {

@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cstdint>
+#include "sphcore/region.hpp"
 
 namespace cosph::coupling {
 

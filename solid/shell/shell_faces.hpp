@@ -21,6 +21,7 @@
 #include "shell_particles.hpp"
 #include "shell_section.hpp"
 #include "sphcore/interface_particles.hpp"
+#include "sphcore/region.hpp"
 
 namespace cosph::solid::shell {
 

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "reissner_beam.hpp"
-#include "sphcore/pair_terms.hpp"
+#include "sphcore/von_mises.hpp"
 #include "sphcore/runaway_error.hpp"
 
 namespace cosph::solid::shell {

@@ -21,9 +21,9 @@
 // The kernels differ (LAMMPS: spiky kernel, support 2.01 dx; here the cubic
 // spline, support 2.6 dx), so the match is of the coefficient, not of every
 // pair force. 0 turns the control off. Without it the oscillating plate is too
-// soft (its period +16 / +6.7 / +3.3 % at 6 / 10 / 16 particles across,
-// converging towards theory): bending mixes with the patterns F cannot see;
-// the period falls as alpha grows (docs/results/oscillating_plate_tl.md).
+// soft, converging towards theory only as the resolution grows: bending mixes
+// with the patterns F cannot see; the period falls as alpha grows
+// (docs/results/oscillating_plate_tl.md; docs/physics.md, "Hourglass control").
 #pragma once
 
 #include <cmath>

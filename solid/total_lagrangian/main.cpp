@@ -1,7 +1,7 @@
 // cosph-solid-tl: the total-Lagrangian SPH solid solver (St Venant-Kirchhoff,
 // corrected reference kernel gradients, hourglass control), for cases with
 // solid.model: "total_lagrangian". Runs a case alone when the case has no
-// fluid; coupled runs come through the coupler, as for cosph-solid.
+// fluid; coupled runs come through the coupler, as for cosph-solid-jaumann.
 #include <sstream>
 
 #include "solid_program.hpp"

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "hooke_pressure.hpp"
 #include "solid_scene.hpp"
 #include "sphcore/cell_grid.hpp"
 #include "sphcore/kernel.hpp"
@@ -25,7 +24,7 @@ Mat2 reference_correction(const Mat2& M) {
 
 TLParticles build_reference_configuration(const sph::CaseFile& case_file,
                                           const SolidParameters& par) {
-  const SolidParticles scene = build_solid_scene(case_file, par);
+  const SolidScene scene = build_solid_scene(case_file, par);
   sph::CellGrid grid;
   grid.build(scene.x, kernel::kSupport * par.h);
   TLParticles P;

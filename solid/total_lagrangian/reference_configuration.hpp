@@ -1,6 +1,7 @@
-// The reference configuration of the total-Lagrangian solid: the particles of
-// the case at their initial positions X (the same scene as the Jaumann
-// solid's: lattice, clamp, weakened regions, initial bending mode), their
+// The reference configuration of the total-Lagrangian solid (docs/physics.md,
+// "Total-Lagrangian solid"): the particles of the case's scene
+// (solid/common/solid_scene.hpp: lattice, clamp, weakened regions, initial
+// bending mode) at their initial positions X, their
 // neighbour lists and corrected kernel gradients, fixed for the whole run
 // (Bonet & Lok 1999, CMAME 180; Vignjevic, Reveles & Campbell 2006):
 //   L0_i = [ sum_j V0_j grad0 W_ij (x) (X_j - X_i) ]^-1,  grad~0 W_ij = L0_i grad0 W_ij,

@@ -5,7 +5,7 @@
 // F is the in-plane 2x2 block; F_zz = 1 and E_zz = 0, so the out-of-plane
 // stress is S_zz = lambda tr(E) (sigma_zz = S_zz / J). lambda = K - 2G/3 is
 // the three-dimensional Lame constant, the same plane-strain convention as
-// the Jaumann solid (SPEC.md "Solid": the 1/3 of its deviator), so that both
+// the Jaumann solid (docs/physics.md, "Jaumann solid": the 1/3 of its deviator), so that both
 // models agree for small strains: sigma = lambda tr(eps) I + 2G eps.
 // Exact under rigid rotation (objective) and linear elastic for small strain;
 // it softens under strong compression (J < ~0.6), which the solver's runaway

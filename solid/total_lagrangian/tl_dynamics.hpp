@@ -12,7 +12,7 @@
 //      (the derivative of the discrete strain energy sum_i V0_i psi(F_i), so
 //      elastic forces conserve energy and linear momentum exactly),
 //    - sum_j m_i m_j Pi_ij dW/dr(|X_ij|) x_ij / r_ij
-//      (Monaghan artificial viscosity, SPEC.md "Momentum", with the kernel
+//      (Monaghan artificial viscosity, docs/physics.md, "Artificial viscosity", with the kernel
 //      of the reference distance along the current direction: central, and
 //      dissipative only for approaching pairs),
 //    + the hourglass force (hourglass_control.hpp), + m_i g.

@@ -6,9 +6,11 @@
 
 #include "kick_drift_kick.hpp"
 #include "reference_configuration.hpp"
-#include "sphcore/pair_terms.hpp"
+#include "solid_runaway.hpp"
+#include "solid_snapshot.hpp"
+#include "sphcore/gauge.hpp"
 #include "sphcore/parallel.hpp"
-#include "sphcore/runaway_error.hpp"
+#include "sphcore/region.hpp"
 #include "sphcore/runaway_screen.hpp"
 #include "unmet_walls.hpp"
 
@@ -75,19 +77,7 @@ sph::Region TLSolver::interaction_bounds() const {
 
 SolidGauges TLSolver::gauges() const {
   const TLParticles& P = particles_;
-  SolidGauges g{0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0};
-  const Vec2 tip = mean_displacement(P.id, P.x, P.X, tip_ids_);
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    const double speed2 = P.v[i].squaredNorm();
-    g.kinetic_energy += 0.5 * P.m[i] * speed2;
-    g.max_speed = std::max(g.max_speed, speed2);
-    g.elastic_energy += P.V0[i] * P.strain_energy[i];
-    g.max_von_mises = std::max(g.max_von_mises, sph::von_mises(P.sigma[i]));
-  }
-  g.tip_dx = tip.x();
-  g.tip_dy = tip.y();
-  g.max_speed = std::sqrt(g.max_speed);
-  return g;
+  return measure(P, P.X, tip_ids_, [&P](std::size_t i) { return P.V0[i] * P.strain_energy[i]; });
 }
 
 std::vector<sph::Gauge> TLSolver::gauge_values() const {
@@ -99,7 +89,7 @@ std::vector<sph::Gauge> TLSolver::gauge_values() const {
   return values;
 }
 
-bool TLSolver::may_have_run_away() const {
+void TLSolver::check_state() const {
   namespace screen = sph::screen;
   const TLParticles& P = particles_;
   const double* const x = sph::doubles_of(P.x);
@@ -107,58 +97,37 @@ bool TLSolver::may_have_run_away() const {
   const double* const F = sph::doubles_of(P.F);
   const double* const J = P.J.data();
   const double* const c = P.c.data();
-  return sph::parallel_any(P.size(), sph::kTeamAtAnySize, [&](long i) {
-    return !(screen::finite_vector(x, i) & screen::finite_matrix(F, i) &
-             screen::clearly_slower(v, i, c[i]) &
-             screen::within(J[i], screen::kLowest, screen::kHighest));
-  });
-}
-
-void TLSolver::check_state() const {
-  if (!may_have_run_away()) return;
-  const TLParticles& P = particles_;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    const char* reason = nullptr;
-    if (!P.x[i].allFinite() || !P.v[i].allFinite() || !P.F[i].allFinite())
-      reason = "its state is not finite";
-    else if (P.v[i].norm() > P.c[i])
-      reason = "it moves faster than the solid's sound speed";
-    else if (!sph::screen::within(P.J[i], sph::screen::kLowest, sph::screen::kHighest))
-      reason = "its volume ratio J = det F left [0.5, 2] (far outside linear elasticity)";
-    if (reason == nullptr) continue;
-    std::ostringstream message = runaway_report(P, static_cast<long>(i), time_, steps_, reason);
-    message << ", J " << P.J[i] << "); the run has blown up: try a smaller run.cfl";
-    throw sph::RunawayError(message.str());
-  }
+  stop_if_run_away(
+      P, time_, steps_,
+      [&](long i) {
+        return screen::finite_vector(x, i) & screen::finite_matrix(F, i) &
+               screen::clearly_slower(v, i, c[i]) &
+               screen::within(J[i], screen::kLowest, screen::kHighest);
+      },
+      [&](std::size_t i) -> const char* {
+        if (!P.x[i].allFinite() || !P.v[i].allFinite() || !P.F[i].allFinite())
+          return "its state is not finite";
+        if (P.v[i].norm() > P.c[i]) return "it moves faster than the solid's sound speed";
+        if (!screen::within(P.J[i], screen::kLowest, screen::kHighest))
+          return "its volume ratio J = det F left [0.5, 2] (far outside linear elasticity)";
+        return nullptr;
+      },
+      [&](std::ostringstream& message, std::size_t i) {
+        message << ", J " << P.J[i] << "); the run has blown up: try a smaller run.cfl";
+      });
 }
 
 sph::Snapshot TLSolver::snapshot() const {
   const TLParticles& P = particles_;
-  const std::size_t n = P.size();
-  std::vector<double> pressure(n), xx(n), xy(n), yy(n), vm(n);
-  std::vector<int> failed(n, 0);
-  std::vector<int> clamped(P.clamped.begin(), P.clamped.end());
-  for (std::size_t i = 0; i < n; ++i) {
-    // Mean normal stress of plane strain, sigma_zz included (as the Jaumann
-    // solid's P = K (rho/rho0 - 1) is).
+  std::vector<double> pressure(P.size());
+  // Mean normal stress of plane strain, sigma_zz included (as the Jaumann
+  // solid's P = K (rho/rho0 - 1) is).
+  for (std::size_t i = 0; i < P.size(); ++i)
     pressure[i] = -(P.sigma[i].trace() + P.sigma_zz[i]) / 3.0;
-    xx[i] = P.sigma[i](0, 0);
-    xy[i] = P.sigma[i](0, 1);
-    yy[i] = P.sigma[i](1, 1);
-    vm[i] = sph::von_mises(P.sigma[i]);
-  }
-  sph::Snapshot snapshot(P.x);
-  snapshot.add_scalar("id", P.id);
-  snapshot.add_vector("velocity", P.v);
-  snapshot.add_scalar("density", P.rho);
-  snapshot.add_scalar("pressure", pressure);
-  snapshot.add_scalar("stress_xx", xx);
-  snapshot.add_scalar("stress_xy", xy);
-  snapshot.add_scalar("stress_yy", yy);
-  snapshot.add_scalar("von_mises", vm);
+  sph::Snapshot snapshot = stress_snapshot(P, pressure);
   snapshot.add_scalar("J", P.J);
-  snapshot.add_scalar("failed", failed);
-  snapshot.add_scalar("clamped", clamped);
+  // No model of failure: no particle fails.
+  add_flags(snapshot, std::vector<std::uint8_t>(P.size(), 0), P.clamped);
   return snapshot;
 }
 

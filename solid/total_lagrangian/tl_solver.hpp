@@ -1,18 +1,18 @@
-// The total-Lagrangian SPH solid (cosph-solid-tl): the second solid model of
-// issue 7, an alternative to the Jaumann solid of solid/src that needs no
-// artificial stress. Stress follows from the deformation gradient F against
-// the fixed reference configuration (reference_configuration.hpp), through
-// St Venant-Kirchhoff elasticity (st_venant_kirchhoff.hpp), with hourglass
-// control (hourglass_control.hpp). References: Bonet & Lok 1999 (CMAME 180),
-// Vignjevic, Reveles & Campbell 2006 (CMAME 195), Ganzenmueller 2015 (CMAME 286).
+// The total-Lagrangian SPH solid (cosph-solid-tl; docs/physics.md,
+// "Total-Lagrangian solid"): an alternative to the Jaumann solid of
+// solid/jaumann that needs no artificial stress. Stress follows from the deformation gradient F
+// against the fixed reference configuration (reference_configuration.hpp), through St
+// Venant-Kirchhoff elasticity (st_venant_kirchhoff.hpp), with hourglass control
+// (hourglass_control.hpp). References: Bonet & Lok 1999 (CMAME 180), Vignjevic, Reveles & Campbell
+// 2006 (CMAME 195), Ganzenmueller 2015 (CMAME 286).
 //
 // Step from t to t + dt, with a known at t (kick-drift-kick, one force
 // evaluation per step; the elastic force depends on positions only, so this
 // is the symplectic velocity Verlet scheme for the elastic part):
 //   v += dt/2 a;  x += dt v;  F, P = P(F);  a = a(x, v, P);  v += dt/2 a
 //
-// The API is the Jaumann SolidSolver's (participant/run_solver.hpp drives
-// either, alone or coupled).
+// The API is the Jaumann solver's (participant/run_solver.hpp drives either,
+// alone or coupled; participant/coupled_solver.hpp states it).
 #pragma once
 
 #include <vector>
@@ -21,7 +21,9 @@
 #include "solid_interface.hpp"
 #include "solid_parameters.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/gauge.hpp"
 #include "sphcore/interface_particles.hpp"
+#include "sphcore/region.hpp"
 #include "sphcore/snapshot_writer.hpp"
 #include "sphcore/time_step.hpp"
 #include "tl_dynamics.hpp"
@@ -41,7 +43,7 @@ class TLSolver {
     begin_step(dt);
     end_step(dt);
   }
-  // As SolidSolver: begin_step kicks, drifts and evaluates the solid's own
+  // As JaumannSolver: begin_step kicks, drifts and evaluates the solid's own
   // forces; the coupler's accelerations arrive through
   // set_interface_accelerations; end_step kicks.
   void begin_step(double dt);
@@ -66,10 +68,8 @@ class TLSolver {
   sph::Snapshot snapshot() const;
 
  private:
+  // Throws sph::RunawayError if a particle's state is not physical.
   void check_state() const;
-  // False when every particle passes check_state's tests with room to spare
-  // (a cheap screen, sph::screen); true when one may fail them.
-  bool may_have_run_away() const;
 
   SolidInterface interface_;  // the particles of the last collect_interface
   SolidParameters parameters_;

@@ -8,7 +8,7 @@ Any solid model that takes part in a coupled cosph run must pass it:
 
 --bin is the folder holding cosph-case, cosph-coupler and cosph-dummy
 (default: the folder of --solid, then build/bin). --model is written as solid.model into
-the cases (default: "jaumann" for cosph-solid, "total_lagrangian" for
+the cases (default: "jaumann" for cosph-solid-jaumann, "total_lagrangian" for
 cosph-solid-tl, otherwise the field is left out).
 
 The solid under test runs against cosph-coupler and a cosph-dummy fluid: a
@@ -525,7 +525,7 @@ class PeerDies(unittest.TestCase):
 
 
 def default_model(solid):
-    return {"cosph-solid": "jaumann", "cosph-solid-tl": "total_lagrangian"}.get(
+    return {"cosph-solid-jaumann": "jaumann", "cosph-solid-tl": "total_lagrangian"}.get(
         os.path.basename(solid))
 
 

@@ -15,6 +15,8 @@
 #include "participant/bound_ipc_file.hpp"
 #include "participant/coupled_run.hpp"
 #include "participant/protocol.hpp"
+#include "sphcore/gauge.hpp"
+#include "sphcore/region.hpp"
 #include "sphcore/time_step.hpp"
 
 namespace {

@@ -6,6 +6,8 @@
 #include <random>
 
 #include "participant/protocol.hpp"
+#include "sphcore/gauge.hpp"
+#include "sphcore/region.hpp"
 
 namespace {
 

@@ -11,7 +11,8 @@
 #include "equation_of_state.hpp"
 #include "fluid_dynamics.hpp"
 #include "fluid_test_support.hpp"
-#include "sphcore/pair_terms.hpp"
+#include "sphcore/artificial_viscosity.hpp"
+#include "sphcore/momentum_bracket.hpp"
 #include "viscous_stress.hpp"
 
 namespace cosph::fluid {

@@ -10,6 +10,7 @@
 #include "fluid_parameters.hpp"
 #include "fluid_solver.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/gauge.hpp"
 #include "test_support.hpp"
 
 namespace cosph::fluid {

@@ -72,7 +72,7 @@ class BadCouplingFields(unittest.TestCase):
         proc = self.launch("coupling.timeout=5")
         self.assertEqual(proc.returncode, 0, proc.stderr)
         started = sorted(p.name[:-len(".pid")] for p in self.state.glob("*.pid"))
-        self.assertEqual(started, ["cosph-coupler", "cosph-fluid", "cosph-solid"])
+        self.assertEqual(started, ["cosph-coupler", "cosph-fluid", "cosph-solid-jaumann"])
 
 
 if __name__ == "__main__":

@@ -24,8 +24,8 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 SCRIPT = HERE.parent.parent / "coupler" / "cosph"
 FAKE_BIN = HERE / "fake_bin"
-THREE = "cosph-coupler cosph-fluid cosph-solid"
-ALL = "cosph-coupler,cosph-fluid,cosph-solid"
+THREE = "cosph-coupler cosph-fluid cosph-solid-jaumann"
+ALL = "cosph-coupler,cosph-fluid,cosph-solid-jaumann"
 
 
 def alive(pid):
@@ -169,10 +169,10 @@ class LauncherTest(unittest.TestCase):
 
     def test_summary_gives_each_process_its_cpu_time(self):
         # The solid computes for 10 x 0.05 s; the others sleep as long.
-        rc, out, err = self.run_case(FAKE_PLAN=THREE, FAKE_BUSY="cosph-solid")
+        rc, out, err = self.run_case(FAKE_PLAN=THREE, FAKE_BUSY="cosph-solid-jaumann")
         self.assertEqual(rc, 0, err)
         match = re.search(r"cosph: CPU time: coupler ([\d.]+) s, fluid ([\d.]+) s, "
-                          r"solid ([\d.]+) s", out)
+                          r"solid-jaumann ([\d.]+) s", out)
         self.assertIsNotNone(match, out)
         coupler, fluid, solid = map(float, match.groups())
         self.assertGreaterEqual(solid, 0.45)
@@ -199,7 +199,7 @@ class LauncherTest(unittest.TestCase):
         allowed = sorted(os.sched_getaffinity(0))
         rc, _, err = self.run_case(FAKE_PLAN=THREE + " separate-cores", FAKE_STEPS="2")
         self.assertEqual(rc, 0, err)
-        fluid, solid = self.fake_cores("cosph-fluid"), self.fake_cores("cosph-solid")
+        fluid, solid = self.fake_cores("cosph-fluid"), self.fake_cores("cosph-solid-jaumann")
         self.assertEqual(sorted(fluid + solid), allowed)   # disjoint, and all of them
         self.assertGreaterEqual(len(fluid), len(solid))
         self.assertEqual(self.fake_cores("cosph-coupler"), allowed)
@@ -218,9 +218,9 @@ class LauncherTest(unittest.TestCase):
 
     def test_endpoint_option(self):
         rc, _, err = self.run_case("--endpoint", "tcp://127.0.0.1:5555",
-                                   FAKE_PLAN="cosph-fluid cosph-solid", FAKE_STEPS="2")
+                                   FAKE_PLAN="cosph-fluid cosph-solid-jaumann", FAKE_STEPS="2")
         self.assertEqual(rc, 0, err)
-        self.assertEqual(self.fake_args("cosph-solid")[-2:],
+        self.assertEqual(self.fake_args("cosph-solid-jaumann")[-2:],
                          ["--endpoint", "tcp://127.0.0.1:5555"])
 
     def test_quiet_shows_no_progress(self):
@@ -311,12 +311,12 @@ class LauncherTest(unittest.TestCase):
 
     def test_one_of_three_fails_others_are_stopped(self):
         start = time.monotonic()
-        rc, _, err = self.run_case(FAKE_PLAN=THREE, FAKE_FAIL="cosph-solid",
+        rc, _, err = self.run_case(FAKE_PLAN=THREE, FAKE_FAIL="cosph-solid-jaumann",
                                    FAKE_HANG="cosph-coupler,cosph-fluid",
                                    FAKE_GRANDCHILD=ALL)
         self.assertLess(time.monotonic() - start, 4.0)
         self.assertEqual(rc, 3)
-        self.assertIn("cosph: cosph-solid failed (exit code 3): error: solid diverged", err)
+        self.assertIn("cosph: cosph-solid-jaumann failed (exit code 3): error: solid-jaumann diverged", err)
         self.assertNotIn("cosph-fluid failed", err)   # stopped by us, not a failure
         self.assert_all_gone(6)   # three fakes and the sleep each one started
 
@@ -328,8 +328,8 @@ class LauncherTest(unittest.TestCase):
 
     def test_sigterm_ignored_escalates_to_sigkill(self):
         start = time.monotonic()
-        rc, _, err = self.run_case(FAKE_PLAN="cosph-fluid cosph-solid",
-                                   FAKE_FAIL="cosph-solid", FAKE_HANG="cosph-fluid",
+        rc, _, err = self.run_case(FAKE_PLAN="cosph-fluid cosph-solid-jaumann",
+                                   FAKE_FAIL="cosph-solid-jaumann", FAKE_HANG="cosph-fluid",
                                    FAKE_IGNORE_TERM="cosph-fluid", COSPH_TERM_GRACE_S="0.5")
         self.assertEqual(rc, 3)
         self.assertIn("cosph-fluid did not stop, killing it", err)
@@ -337,10 +337,10 @@ class LauncherTest(unittest.TestCase):
         self.assert_all_gone(2)
 
     def test_straggler_is_stopped(self):
-        rc, _, err = self.run_case(FAKE_PLAN="cosph-fluid cosph-solid", FAKE_STEPS="3",
-                                   FAKE_HANG="cosph-solid", COSPH_STRAGGLER_S="0.5")
+        rc, _, err = self.run_case(FAKE_PLAN="cosph-fluid cosph-solid-jaumann", FAKE_STEPS="3",
+                                   FAKE_HANG="cosph-solid-jaumann", COSPH_STRAGGLER_S="0.5")
         self.assertEqual(rc, 1)
-        self.assertIn("cosph-solid failed (still running 0.5 s after cosph-fluid finished)",
+        self.assertIn("cosph-solid-jaumann failed (still running 0.5 s after cosph-fluid finished)",
                       err)
         self.assert_all_gone(2)
 
@@ -374,7 +374,7 @@ class LauncherTest(unittest.TestCase):
     def test_sigterm_to_launcher_forwards_sigint(self):
         rc, _, _, err = self.interrupt(signal.SIGTERM)
         self.assertEqual(rc, 130, err)
-        self.assertTrue((self.state / "cosph-solid.sigint").exists())
+        self.assertTrue((self.state / "cosph-solid-jaumann.sigint").exists())
         self.assert_all_gone(6)
 
     def test_child_ignoring_sigint_is_killed(self):

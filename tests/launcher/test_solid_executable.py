@@ -53,7 +53,7 @@ class ThirdPartySolid(unittest.TestCase):
         shutil.copytree(FAKE_BIN, self.bin)
         (self.bin / "cosph-case").unlink()
         (self.bin / "cosph-case").symlink_to(case_exe.resolve())
-        (self.bin / "cosph-solid").unlink()   # the built-in solid must not be what runs
+        (self.bin / "cosph-solid-jaumann").unlink()   # the built-in solid must not be what runs
         self.cases = self.tmp / "my_cases"
         self.cases.mkdir()
         self.state = self.tmp / "state"
@@ -112,7 +112,7 @@ class ThirdPartySolid(unittest.TestCase):
     @unittest.skipIf(len(os.sched_getaffinity(0)) < 2, "needs two cores")
     def test_multi_rate_plan_gives_each_solver_cores_of_its_own(self):
         """The real plan asks for it in a multi-rate run only, and the solid of
-        the user's own gets the second half of the cores as cosph-solid would."""
+        the user's own gets the second half of the cores as cosph-solid-jaumann would."""
         self.install(self.cases)
         allowed = sorted(os.sched_getaffinity(0))
         cores = {}

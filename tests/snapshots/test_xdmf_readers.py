@@ -17,7 +17,7 @@ import xml.etree.ElementTree as ET
 import h5py
 import numpy as np
 
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "cases"))
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "case_runs"))
 import case_runs  # noqa: E402
 
 try:

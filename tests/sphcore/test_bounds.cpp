@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "sphcore/interface_particles.hpp"
+#include "sphcore/region.hpp"
 
 namespace sph {
 namespace {

@@ -7,8 +7,10 @@
 #include <cmath>
 #include <random>
 
+#include "sphcore/artificial_viscosity.hpp"
 #include "sphcore/kernel.hpp"
-#include "sphcore/pair_terms.hpp"
+#include "sphcore/momentum_bracket.hpp"
+#include "sphcore/von_mises.hpp"
 
 namespace {
 

@@ -15,10 +15,9 @@
 // gauges each solver sends with the states it asks them for (those due in it);
 // each solver writes its own snapshots.
 //
-// Solver needs: begin_step, end_step, step_limits, collect_interface,
-// set_interface_accelerations, interaction_bounds, max_smoothing_length,
-// gauge_values, time, steps, snapshot, particles().size(); optionally
-// set_interface_density_rates, and advance_state with compute_forces.
+// What the solver must offer is the concept CoupledSolver
+// (coupled_solver.hpp); optionally set_interface_density_rates, and
+// advance_state with compute_forces (SplitsItsStep).
 #pragma once
 
 #include <algorithm>
@@ -28,7 +27,10 @@
 #include <string>
 #include <vector>
 
+#include "participant/coupled_solver.hpp"
 #include "participant/participant.hpp"
+#include "sphcore/gauge.hpp"
+#include "sphcore/region.hpp"
 #include "sphcore/run_control.hpp"
 #include "sphcore/run_parameters.hpp"
 #include "sphcore/runaway_error.hpp"
@@ -52,14 +54,7 @@ inline int substeps_for(double window, double proposed_dt) {
   return ratio <= 1.0 ? 1 : static_cast<int>(std::ceil(ratio * (1.0 - 1e-12)));
 }
 
-// A solver whose step splits where its interface state is complete.
-template <class Solver>
-concept SplitsItsStep = requires(Solver& solver, double dt) {
-  solver.advance_state(dt);
-  solver.compute_forces();
-};
-
-template <class Solver>
+template <CoupledSolver Solver>
 class CoupledRun {
  public:
   CoupledRun(Solver& solver, const sph::RunParameters& run, CoupledRunSettings settings)

@@ -8,7 +8,9 @@
 #include <string>
 #include <vector>
 
+#include "sphcore/gauge.hpp"
 #include "sphcore/interface_particles.hpp"
+#include "sphcore/region.hpp"
 
 namespace cosph::coupling {
 

@@ -13,6 +13,7 @@
 
 #include "coupling.pb.h"
 #include "sphcore/interface_particles.hpp"
+#include "sphcore/region.hpp"
 
 namespace cosph::coupling {
 

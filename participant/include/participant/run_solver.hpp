@@ -9,6 +9,7 @@
 #include "participant/coupled_run.hpp"
 #include "participant/coupling_timeout.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/gauge.hpp"
 #include "sphcore/solver_cli.hpp"
 #include "sphcore/standalone_run.hpp"
 

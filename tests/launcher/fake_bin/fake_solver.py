@@ -1,4 +1,4 @@
-"""Behaviour shared by the fake cosph-fluid, cosph-solid and cosph-coupler.
+"""Behaviour shared by the fake cosph-fluid, cosph-solid-jaumann and cosph-coupler.
 
 Steered by environment variables (NAME lists are comma-separated exe names):
   FAKE_DIR          folder for <exe>.pid, <exe>.args (JSON argv), <exe>.cores

@@ -1,0 +1,52 @@
+// What a solver must offer for CoupledRun to drive it: the contract of a
+// phase in a coupled run, checked where the template is used, so that a
+// solver missing a member fails to compile with a message naming it.
+#pragma once
+
+#include <concepts>
+#include <vector>
+
+#include "sphcore/gauge.hpp"
+#include "sphcore/interface_particles.hpp"
+#include "sphcore/region.hpp"
+#include "sphcore/snapshot_writer.hpp"
+#include "sphcore/time_step.hpp"
+#include "sphcore/types.hpp"
+
+namespace cosph::coupling {
+
+template <class Solver>
+concept CoupledSolver = requires(Solver& solver, const Solver& done, double dt,
+                                 const sph::Region& region, sph::InterfaceParticles& out,
+                                 const std::vector<sph::Vec2>& accelerations) {
+  // A step split where the coupler's cross-phase accelerations are needed:
+  // begin_step kicks, drifts and evaluates the solver's own forces, end_step
+  // kicks with the accelerations set in between.
+  solver.begin_step(dt);
+  solver.end_step(dt);
+  { done.step_limits() } -> std::convertible_to<sph::StepLimits>;
+  // The particles inside `region` out, and the coupler's accelerations for
+  // them back, in the same order.
+  solver.collect_interface(region, out);
+  solver.set_interface_accelerations(accelerations);
+  { done.interaction_bounds() } -> std::convertible_to<sph::Region>;
+  { done.max_smoothing_length() } -> std::convertible_to<double>;
+  // What the coupler writes to timeseries.csv, and the solver to its snapshots.
+  { done.gauge_values() } -> std::convertible_to<std::vector<sph::Gauge>>;
+  { done.snapshot() } -> std::convertible_to<sph::Snapshot>;
+  { done.time() } -> std::convertible_to<double>;
+  { done.steps() } -> std::convertible_to<long>;
+  { done.particles().size() } -> std::convertible_to<std::size_t>;
+};
+
+// Optional: a solver whose step splits where its interface state is complete
+// (advance_state: kick, drift, density, stress), and its own forces begin
+// (compute_forces), so that the coupler computes the cross-phase terms while
+// the solver computes its own.
+template <class Solver>
+concept SplitsItsStep = requires(Solver& solver, double dt) {
+  solver.advance_state(dt);
+  solver.compute_forces();
+};
+
+}  // namespace cosph::coupling

@@ -1,0 +1,64 @@
+// What a solid executable does from its command line to the end of its run:
+// read the case, refuse a case of another solid model, build the solver, say
+// what it built, and run it alone or coupled (participant/run_solver.hpp).
+// cosph-solid-jaumann and cosph-solid-tl differ only in the fields of SolidProgram.
+#pragma once
+
+#include <omp.h>
+
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "participant/run_solver.hpp"
+#include "solid_parameters.hpp"
+#include "sphcore/case_file.hpp"
+#include "sphcore/solver_cli.hpp"
+
+namespace cosph::solid {
+
+template <class Solver>
+struct SolidProgram {
+  const char* name;           // of the executable, "cosph-solid-jaumann"
+  const char* about;          // one line for --help
+  SolidModel model;           // the case's solid.model this program runs
+  const char* protocol_name;  // how it introduces itself to the coupler
+  // The model's own part of the start-up line ("artificial stress on").
+  std::function<std::string(const Solver&, const SolidParameters&)> summary;
+  // One note for each setting of the case that this model does not use.
+  std::function<std::vector<std::string>(const sph::CaseFile&, const SolidParameters&)>
+      unused_settings =
+          [](const sph::CaseFile&, const SolidParameters&) { return std::vector<std::string>{}; };
+};
+
+template <class Solver>
+int run_solid_program(int argc, char** argv, const SolidProgram<Solver>& program) {
+  return sph::run_guarded(program.name, [&] {
+    const sph::SolverArgs args = sph::parse_solver_args(argc, argv, program.name, program.about);
+    const sph::CaseFile case_file = sph::load_case(args.case_path, args.overrides);
+    const SolidParameters parameters = read_solid_parameters(case_file);
+    require_model(case_file, parameters, program.model);
+    const bool coupled = !args.endpoint.empty();
+    sph::require(coupled || !case_file.config.has_fluid(), case_file, "fluid",
+                 "this case is coupled: run it with coupler/cosph, which starts the coupler");
+    sph::make_output_dir(args.out_dir);
+    sph::install_stop_handlers();
+
+    sph::RunThreads threads(parameters.run.threads);
+    Solver solver(case_file, parameters);
+    threads.settle(solver.particles().size());
+    long clamped = 0;
+    for (auto c : solver.particles().clamped) clamped += c;
+    std::cout << program.name << ": " << solver.particles().size() << " solid particles ("
+              << clamped << " clamped), dx = " << parameters.dx << " m, h = " << parameters.h
+              << " m, c = " << parameters.c0 << " m/s, " << program.summary(solver, parameters)
+              << ", " << omp_get_max_threads() << " threads" << std::endl;
+    for (const std::string& note : program.unused_settings(case_file, parameters))
+      std::cout << program.name << ": note: " << note << std::endl;
+    return coupling::run_solver(solver, parameters.run, case_file, args, "solid",
+                                coupling::PhaseKind::solid, program.protocol_name);
+  });
+}
+
+}  // namespace cosph::solid

@@ -1,0 +1,202 @@
+#include "jaumann_solver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "artificial_stress.hpp"
+#include "hooke_pressure.hpp"
+#include "jaumann_dynamics.hpp"
+#include "kick_drift_kick.hpp"
+#include "solid_runaway.hpp"
+#include "solid_scene.hpp"
+#include "solid_snapshot.hpp"
+#include "sphcore/gauge.hpp"
+#include "sphcore/kernel.hpp"
+#include "sphcore/parallel.hpp"
+#include "sphcore/permutation.hpp"
+#include "sphcore/region.hpp"
+#include "sphcore/runaway_screen.hpp"
+#include "unmet_walls.hpp"
+#include "von_mises_failure.hpp"
+
+namespace cosph::solid::jaumann {
+
+JaumannSolver::JaumannSolver(const sph::CaseFile& case_file, const SolidParameters& parameters)
+    : parameters_(parameters),
+      particles_(JaumannParticles::from_scene(build_solid_scene(case_file, parameters))),
+      skin_(sph::kSkinOverH * parameters.h) {
+  if (parameters_.tip_gauge)
+    tip_ids_ = tip_gauge_ids(particles_.id, particles_.x0, *parameters_.tip_gauge, parameters_.dx);
+  parameters_.unmet_walls =
+      walls_no_free_particle_is_inside(particles_.x, particles_.clamped, parameters_.unmet_walls);
+  mark_inert_clamp();
+  sort();
+  compute_rates(particles_, candidates_, parameters_);  // for the renormalisation matrices
+  update_stress(Including::inert);
+  compute_accelerations(particles_, parameters_);
+}
+
+void JaumannSolver::sort() {
+  JaumannParticles& P = particles_;
+  const double reach = sph::kernel::kSupport * parameters_.h + skin_;
+  grid_.build(P.x, reach);
+  sph::permute(grid_.order(), P.id, P.x, P.v, P.x0, P.rho, P.m, P.s, P.K, P.G, P.c, P.sigma_y,
+               P.clamped, P.failed, P.inert, P.external_a);
+  x_at_sort_ = P.x;
+  // The rates pass works each pair out once, from its lower index: it needs
+  // a particle's later candidates only, and its inert ones (an inert
+  // particle has no list of its own). The quadratic fit needs them all.
+  const bool whole = parameters_.velocity_gradient == VelocityGradient::quadratic;
+  candidates_.build(
+      grid_, P.x, reach, [&P](long i) { return !P.inert[i]; },
+      [&P, whole](long i, int j) { return whole || j > i || P.inert[j]; });
+}
+
+void JaumannSolver::mark_inert_clamp() {
+  JaumannParticles& P = particles_;
+  // Twice the support: a free particle near the root may move a little closer.
+  const double reach = 2.0 * sph::kernel::kSupport * parameters_.h;
+  std::vector<Vec2> free;
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (!P.clamped[i]) free.push_back(P.x[i]);
+  for (std::size_t i = 0; i < P.size(); ++i)
+    P.inert[i] = P.clamped[i] && std::none_of(free.begin(), free.end(), [&](const Vec2& x) {
+                   return (x - P.x[i]).squaredNorm() < reach * reach;
+                 });
+}
+
+void JaumannSolver::update_stress(Including including) {
+  JaumannParticles& P = particles_;
+  const SolidParameters& par = parameters_;
+  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
+    // An inert particle's rates are zero: its stress is the one it started with.
+    if (P.inert[i] && including == Including::active_only) return;
+    // A failed particle carries no tension, so it has no expanded state: as it
+    // separates from the body, continuity would thin its density without
+    // limit; it stays at rho0, and resists at once when pushed back.
+    if (P.failed[i]) P.rho[i] = std::max(P.rho[i], par.rho0);
+    P.p[i] = hooke_pressure(P.K[i], P.rho[i], par.rho0);
+    const Mat2 sigma = -P.p[i] * Mat2::Identity() + P.s[i];
+    if (par.fracture.enabled && !P.failed[i] && yields(sigma, P.sigma_y[i])) P.failed[i] = 1;
+    if (P.failed[i]) P.s[i] = Mat2::Zero();
+    P.sigma[i] = P.failed[i] ? failed_stress(P.p[i]) : sigma;
+    P.sigma_L[i] = sph::product_2x2(P.sigma[i], P.L[i]);
+    P.R[i] = par.artificial_stress.enabled
+                 ? artificial_stress(P.sigma[i], P.rho[i], par.artificial_stress.epsilon)
+                 : Mat2::Zero();
+  });
+}
+
+sph::StepLimits JaumannSolver::step_limits() const {
+  return solid_step_limits(particles_, parameters_);
+}
+
+void JaumannSolver::begin_step(double dt) {
+  advance_state(dt);
+  compute_forces();
+}
+
+void JaumannSolver::advance_state(double dt) {
+  JaumannParticles& P = particles_;
+  // The largest squared displacement since the last sort.
+  const double moved2 = sph::parallel_max(P.size(), 0.0, sph::kTeamAtAnySize, [&](long i) {
+    if (P.clamped[i]) return 0.0;
+    kick_and_drift(P, i, dt, parameters_);
+    return (P.x[i] - x_at_sort_[i]).squaredNorm();
+  });
+  const double rebuild_at = sph::verlet_rebuild_distance(parameters_.h);
+  if (moved2 > rebuild_at * rebuild_at) sort();
+  compute_rates(P, candidates_, parameters_);
+  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
+    P.rho[i] += dt * P.drho[i];
+    P.s[i] += dt * P.ds[i];
+  });
+  update_stress(Including::active_only);
+  check_state();  // before the state is shown to anyone, the coupler included
+}
+
+void JaumannSolver::compute_forces() {
+  compute_accelerations(particles_, parameters_);
+}
+
+void JaumannSolver::end_step(double dt) {
+  closing_kick(particles_, dt);
+  time_ += dt;
+  ++steps_;
+  check_state();
+  stop_if_in_unmet_wall(particles_, parameters_.unmet_walls, time_, steps_);
+}
+
+void JaumannSolver::collect_interface(const sph::Region& region, sph::InterfaceParticles& out) {
+  interface_.collect(particles_, parameters_.h, region, out);
+}
+
+void JaumannSolver::set_interface_accelerations(const std::vector<Vec2>& accelerations) {
+  interface_.scatter(accelerations, particles_.external_a);
+}
+
+sph::Region JaumannSolver::interaction_bounds() const {
+  return sph::bounds_of(particles_.x);
+}
+
+SolidGauges JaumannSolver::gauges() const {
+  const JaumannParticles& P = particles_;
+  return measure(P, P.x0, tip_ids_, [&P](std::size_t i) {
+    // Strain energy density P^2/(2K) + s:s/(4G), with the out-of-plane
+    // deviator s_zz = -(s_xx + s_yy) of plane strain.
+    const double V = P.m[i] / P.rho[i];
+    const double trace = P.s[i].trace();
+    return V * (P.p[i] * P.p[i] / (2.0 * P.K[i]) +
+                (P.s[i].squaredNorm() + trace * trace) / (4.0 * P.G[i]));
+  });
+}
+
+std::vector<sph::Gauge> JaumannSolver::gauge_values() const {
+  std::vector<sph::Gauge> values = named_gauges(gauges());
+  const JaumannParticles& P = particles_;
+  for (const sph::Gauge& gauge :
+       broken_part_gauges(parameters_.broken_part_below_y, P.x0, P.x, P.m, P.clamped))
+    values.push_back(gauge);
+  return values;
+}
+
+void JaumannSolver::check_state() const {
+  namespace screen = sph::screen;
+  const JaumannParticles& P = particles_;
+  const double* const x = sph::doubles_of(P.x);
+  const double* const v = sph::doubles_of(P.v);
+  const double* const s = sph::doubles_of(P.s);
+  const double* const rho = P.rho.data();
+  const double* const c = P.c.data();
+  const double rho_min = screen::kLowest * parameters_.rho0,
+               rho_max = screen::kHighest * parameters_.rho0;
+  stop_if_run_away(
+      P, time_, steps_,
+      [&](long i) {
+        return screen::finite_vector(x, i) & screen::finite_matrix(s, i) &
+               screen::clearly_slower(v, i, c[i]) & screen::within(rho[i], rho_min, rho_max);
+      },
+      [&](std::size_t i) -> const char* {
+        if (!P.x[i].allFinite() || !P.v[i].allFinite() || !std::isfinite(P.rho[i]) ||
+            !P.s[i].allFinite())
+          return "its state is not finite";
+        if (P.v[i].norm() > P.c[i]) return "it moves faster than the solid's sound speed";
+        if (!screen::within(P.rho[i], rho_min, rho_max))
+          return "its density left [0.5, 2] rho0 (far outside linear elasticity)";
+        return nullptr;
+      },
+      [&](std::ostringstream& message, std::size_t i) {
+        message << ", density " << P.rho[i]
+                << " kg/m^3); the run has blown up: try a smaller run.cfl, or turn on "
+                   "solid.artificial_stress if the body is under tension";
+      });
+}
+
+sph::Snapshot JaumannSolver::snapshot() const {
+  sph::Snapshot snapshot = stress_snapshot(particles_, particles_.p);
+  add_flags(snapshot, particles_.failed, particles_.clamped);
+  return snapshot;
+}
+
+}  // namespace cosph::solid::jaumann
