@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "reissner_beam.hpp"
-#include "sphcore/von_mises.hpp"
 #include "sphcore/runaway_error.hpp"
+#include "sphcore/von_mises.hpp"
 
 namespace cosph::solid::shell {
 
