@@ -6,8 +6,9 @@
 // "cosph-fluid" and the solid's program for a coupled case. The solid's
 // program is "cosph-solid" or "cosph-solid-tl" after solid.model, or the
 // absolute path of the program solid.executable names (solid_executable.hpp).
-// A multi-rate coupled case (coupling.max_substeps > 1, the solid at its own
-// step) ends with a line "separate-cores": the launcher then gives each solver
+// A multi-rate coupled case (coupling.max_substeps > 1, or 0 and multi-rate
+// chosen by substep_choice.hpp; the solid at its own step) ends with a line
+// "separate-cores": the launcher then gives each solver
 // cores of its own (README, "Speed").
 #include <cstdlib>
 #include <filesystem>
@@ -21,6 +22,7 @@
 #include "sphcore/case_file.hpp"
 #include "sphcore/run_parameters.hpp"
 #include "sphcore/solver_cli.hpp"
+#include "substep_choice.hpp"
 
 namespace {
 
@@ -62,14 +64,15 @@ int plan(int argc, char** argv) {
     const auto parameters = cosph::fluid::read_fluid_parameters(case_file);
     cosph::fluid::check_walls_close(case_file, parameters);
   }
+  const bool separate_cores = fluid && solid &&
+                              cosph::coupler::read_substep_choice(case_file).max_substeps > 1 &&
+                              case_file.config.coupling().solid_step() != "fluid";
   std::vector<std::string> programs;
   if (fluid && solid) programs = {"cosph-coupler", "cosph-fluid"};
   if (fluid && !solid) programs = {"cosph-fluid"};
   if (solid) programs.push_back(cosph::coupling::solid_program(case_file, executable_search()));
   for (const std::string& program : programs) std::cout << program << "\n";
-  const auto& coupling = case_file.config.coupling();
-  if (fluid && solid && coupling.max_substeps() > 1 && coupling.solid_step() != "fluid")
-    std::cout << "separate-cores\n";
+  if (separate_cores) std::cout << "separate-cores\n";
   return 0;
 }
 

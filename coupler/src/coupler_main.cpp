@@ -2,7 +2,6 @@
 // the common step and computes the cross-phase momentum terms once per pair.
 // Started by the launcher: coupler/cosph run CASE --out DIR.
 
-#include <algorithm>
 #include <iostream>
 
 #include "coupler_session.hpp"
@@ -10,6 +9,7 @@
 #include "sphcore/case_file.hpp"
 #include "sphcore/run_control.hpp"
 #include "sphcore/solver_cli.hpp"
+#include "substep_choice.hpp"
 
 namespace {
 
@@ -70,14 +70,18 @@ int run(int argc, char** argv) {
   settings.run = sph::read_run_parameters(case_file);
   settings.timeout_seconds = coupling.timeout() > 0.0 ? coupling.timeout() : 10.0;
   settings.cross_phase = read_cross_phase_parameters(case_file);
-  sph::require(coupling.max_substeps() >= 0, case_file, "coupling.max_substeps",
-               "must not be negative");
-  settings.max_substeps = std::max(1, coupling.max_substeps());
+  const cosph::coupler::SubstepChoice substeps = cosph::coupler::read_substep_choice(case_file);
+  settings.max_substeps = substeps.max_substeps;
   sph::require(coupling.solid_step().empty() || coupling.solid_step() == "own" ||
                    coupling.solid_step() == "fluid",
                case_file, "coupling.solid_step",
                "must be \"own\" (default) or \"fluid\", not \"" + coupling.solid_step() + "\"");
   settings.solid_at_fluid_step = coupling.solid_step() == "fluid";
+  std::cout << "cosph-coupler: sub-stepping: "
+            << (settings.solid_at_fluid_step ? "the fluid's step, taken whole by the solid "
+                                               "(coupling.solid_step \"fluid\")"
+                                             : substeps.reason)
+            << std::endl;
   sph::make_output_dir(args.out_dir);
   sph::install_stop_handlers();
   return cosph::coupler::run_coupler(settings);
