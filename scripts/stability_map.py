@@ -10,8 +10,10 @@ with an error is a result, not a failure of this script):
      (coupling.solid_step = fluid), which must stop with an error;
   3. delta-SPH density diffusion off and on: pressure noise in a still tank
      and in the dam break, over the particles and at the case's floor sensor;
-  4. the solid-to-fluid density ratio of the coupled plate, down from 1.1
-     (multi-rate), and the first ratio that breaks again with synchronised steps.
+  4. the solid-to-fluid density ratio of the coupled plate, down from 1.1,
+     multi-rate, then with the case's default, the coupler's automatic choice
+     (docs/auto_substeps.md), and the first ratio that breaks multi-rate again
+     with synchronised steps.
 (Artificial stress off against on: scripts/tensile_instability.py.)
 
 Writes docs/results/stability_map.md and docs/figures/stability_cfl.png.
@@ -37,6 +39,7 @@ CFLS = [0.25, 0.5, 1.0, 1.5, 2.0, 3.0, 4.0]
 COUPLED_CFLS = [0.25, 0.5, 1.0, 1.5, 2.0]
 DENSITY_RATIOS = [1.1, 0.5, 0.25, 0.1, 0.05, 0.02, 0.01]
 MULTIRATE = ["coupling.max_substeps=64"]
+SYNCHRONISED = ["coupling.max_substeps=1"]
 
 SCENES = {  # name: (case, settings, end time)
     "fluid alone (dam break, 8 mm)": ("dam_break", [], 0.3),
@@ -199,30 +202,71 @@ def diffusion_rows(out_root):
     return rows
 
 
+def automatic_choice(out):
+    """The coupler's automatic choice in a run's log: ("multi-rate" or
+    "synchronised", the added-mass ratio of a window), or None."""
+    log_path = os.path.join(out, "launcher.log")
+    text = open(log_path).read() if os.path.exists(log_path) else ""
+    found = re.search(r"sub-stepping: (multi-rate|synchronised)\b.*"
+                      r"added-mass ratio of a window ([0-9.eE+-]+)", text)
+    return (found.group(1), float(found.group(2))) if found else None
+
+
 def density_run(out_root, ratio, label, settings):
-    """One run of the plate with rho_s = ratio rho_f to t = 0.1 s: its row and whether it ran."""
+    """One run of the plate with rho_s = ratio rho_f to t = 0.1 s: its row,
+    whether it ran, and the automatic choice its coupler made, if any."""
     # The multi-rate runs keep the folder names of earlier maps, for --reuse.
     suffix = "" if label == "multi-rate" else f"_{label}"
     out = os.path.join(out_root, f"density_{ratio}{suffix}")
     reached, dt, error, wall = launch("elastic_plate", out,
                                       settings + [f"solid.density={1000.0 * ratio}"], 0.1)
-    row = [f"{ratio:g}", label, ("runs to 0.1 s" if not error else
+    choice = automatic_choice(out) if label == "automatic" else None
+    if label == "automatic" and choice is None:
+        raise RuntimeError(f"{out}: the coupler did not say what it chose")
+    shown = f"automatic: {choice[0]} (mu_W = {choice[1]:.3g})" if choice else label
+    row = [f"{ratio:g}", shown, ("runs to 0.1 s" if not error else
            f"stops at t = {reached:.3g} s: {reason(error)}") + spray_note(out), f"{wall:.0f}"]
     print(row, flush=True)
-    return row, not error
+    return row, not error, choice
+
+
+def automatic_verdict(runs, choices):
+    """Sentences on the automatic rows: where the coupler chose what, and
+    whether every choice held."""
+    multi = [ratio for ratio in runs if choices[ratio][0] == "multi-rate"]
+    synchronised = [ratio for ratio in runs if choices[ratio][0] == "synchronised"]
+    failed = [ratio for ratio, ran in runs.items() if not ran]
+    mu = lambda ratio: f"{choices[ratio][1]:.3g}"
+    text = "With the case's default, the coupler's automatic choice, "
+    parts = []
+    if multi:
+        parts.append(f"multi-rate down to {min(multi):g} (mu_W up to {mu(min(multi))})")
+    if synchronised:
+        parts.append(f"synchronised steps from {max(synchronised):g} down "
+                     f"(mu_W from {mu(max(synchronised))})")
+    text += " and ".join(parts) + " were chosen against the bound mu_W <= 1: "
+    text += ("every ratio runs to 0.1 s." if not failed else
+             "the choice fails at " + ", ".join(f"{r:g}" for r in failed) + ".")
+    return text
 
 
 def density_rows(out_root):
     """The table's rows, and sentences on where the sweep breaks: multi-rate
-    down the ratios, then the first ratio that stops again with synchronised
-    steps, to tell the window's held forces from the coupling itself."""
-    rows, runs = [], {}
+    down the ratios, the automatic choice at each, then the first ratio that
+    stops again with synchronised steps, to tell the window's held forces
+    from the coupling itself."""
+    rows, runs, auto_runs, choices = [], {}, {}, {}
     for ratio in DENSITY_RATIOS:
-        row, runs[ratio] = density_run(out_root, ratio, "multi-rate", MULTIRATE)
+        row, runs[ratio], _ = density_run(out_root, ratio, "multi-rate", MULTIRATE)
         rows.append(row)
+    for ratio in DENSITY_RATIOS:
+        row, auto_runs[ratio], choices[ratio] = density_run(out_root, ratio, "automatic", [])
+        rows.append(row)
+    auto_text = automatic_verdict(auto_runs, choices)
     failing = [ratio for ratio, ran in runs.items() if not ran]
     if not failing:
-        return rows, f"Every ratio down to {min(runs):g} runs to 0.1 s: no break was found."
+        return rows, (f"Every ratio down to {min(runs):g} runs to 0.1 s: no break was found. "
+                      + auto_text)
     heaviest_failing = max(failing)
     running = [ratio for ratio, ran in runs.items() if ran and ratio > heaviest_failing]
     lighter = [ratio for ratio in runs if ratio < heaviest_failing]
@@ -234,14 +278,20 @@ def density_rows(out_root):
         verdict += (": every lighter plate stops too" if stop_too else
                     ", though a lighter plate runs again")
     verdict += ". The solvers' own checks stop each run, and the error says where."
-    row, synchronised_ran = density_run(out_root, heaviest_failing, "synchronised", [])
-    rows.append(row)
-    verdict += (f" With synchronised steps the {heaviest_failing:g} plate "
+    if choices[heaviest_failing][0] == "synchronised":
+        # The automatic row at that ratio is this run already.
+        synchronised_ran, where = auto_runs[heaviest_failing], "(its automatic row)"
+    else:
+        row, synchronised_ran, _ = density_run(out_root, heaviest_failing, "synchronised",
+                                               SYNCHRONISED)
+        rows.append(row)
+        where = "(its synchronised row)"
+    verdict += (f" With synchronised steps the {heaviest_failing:g} plate {where} "
                 + ("runs to 0.1 s: what breaks is holding the interface forces over the "
                    "multi-rate window, not the pair-by-pair coupling, so a light structure "
                    "wants synchronised steps." if synchronised_ran else
                    "stops too: the pair-by-pair coupling itself breaks there."))
-    return rows, verdict
+    return rows, verdict + "\n\n" + auto_text
 
 
 def draw(curves, path):
@@ -309,7 +359,10 @@ def main():
         "",
         "**Solid-to-fluid density ratio** of the coupled plate (to t = 0.1 s); the "
         "case has 1.1. Partitioned coupling of light structures is where added-mass "
-        "trouble is known to start.",
+        "trouble is known to start. Multi-rate rows hold at most 64 sub-steps a window; "
+        "the automatic rows run the case's default (`coupling.max_substeps: 0`), and "
+        "name what the coupler chose and the added-mass ratio of a window mu_W it "
+        "chose by (docs/auto_substeps.md).",
         "",
         table(["rho_s / rho_f", "coupling", "outcome", "wall (s)"], density_table),
         "",

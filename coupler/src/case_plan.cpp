@@ -6,9 +6,10 @@
 // "cosph-fluid" and the solid's program for a coupled case. The solid's
 // program is "cosph-solid-jaumann" or "cosph-solid-tl" after solid.model, or the
 // absolute path of the program solid.executable names (solid_executable.hpp).
-// A multi-rate coupled case (coupling.max_substeps > 1, the solid at its own
-// step) ends with a line "separate-cores": the launcher then gives each solver
-// cores of its own (docs/coupling.md, "Multi-rate coupling").
+// A multi-rate coupled case (coupling.max_substeps > 1, or 0 and multi-rate
+// chosen by substep_choice.hpp; the solid at its own step) ends with a line
+// "separate-cores": the launcher then gives each solver cores of its own
+// (docs/coupling.md, "Multi-rate coupling").
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -65,15 +66,16 @@ int plan(int argc, char** argv) {
   }
   // The coupler's own fields too, so that a bad one stops the run before
   // any process starts.
-  if (fluid && solid) cosph::coupler::read_coupler_settings(case_file);
+  const bool separate_cores = fluid && solid && [&] {
+    const auto settings = cosph::coupler::read_coupler_settings(case_file);
+    return settings.max_substeps > 1 && !settings.solid_at_fluid_step;
+  }();
   std::vector<std::string> programs;
   if (fluid && solid) programs = {"cosph-coupler", "cosph-fluid"};
   if (fluid && !solid) programs = {"cosph-fluid"};
   if (solid) programs.push_back(cosph::coupling::solid_program(case_file, executable_search()));
   for (const std::string& program : programs) std::cout << program << "\n";
-  const auto& coupling = case_file.config.coupling();
-  if (fluid && solid && coupling.max_substeps() > 1 && coupling.solid_step() != "fluid")
-    std::cout << "separate-cores\n";
+  if (separate_cores) std::cout << "separate-cores\n";
   return 0;
 }
 

@@ -2,12 +2,15 @@
 // the common step and computes the cross-phase momentum terms once per pair.
 // Started by the launcher: coupler/cosph run CASE --out DIR.
 
+#include <iostream>
+
 #include "coupler_session.hpp"
 #include "coupler_settings.hpp"
 #include "participant/protocol.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/run_control.hpp"
 #include "sphcore/solver_cli.hpp"
+#include "substep_choice.hpp"
 
 namespace {
 
@@ -21,6 +24,7 @@ int run(int argc, char** argv) {
                "the coupler needs an endpoint to bind (ipc://PATH or tcp://HOST:PORT)");
   settings.endpoint = args.endpoint;
   settings.out_dir = args.out_dir;
+  std::cout << "cosph-coupler: sub-stepping: " << settings.stepping_reason << std::endl;
   sph::make_output_dir(args.out_dir);
   sph::install_stop_handlers();
   return cosph::coupler::run_coupler(settings);

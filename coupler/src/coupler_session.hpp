@@ -15,7 +15,8 @@ struct CouplerSettings {
   std::string out_dir;
   sph::RunParameters run;
   CrossPhaseParameters cross_phase;
-  int max_substeps = 1;  // 1: synchronised steps; more: multi-rate (common_step.hpp)
+  int max_substeps = 1;         // 1: synchronised steps; more: multi-rate (common_step.hpp)
+  std::string stepping_reason;  // for the run's log: which stepping and why
   // coupling.solid_step = "fluid": the fluid's step, taken whole by the solid
   // too (a stability test that must end in an error).
   bool solid_at_fluid_step = false;

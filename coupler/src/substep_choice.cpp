@@ -1,0 +1,83 @@
+#include "substep_choice.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "fluid_parameters.hpp"
+#include "solid_parameters.hpp"
+
+namespace cosph::coupler {
+
+namespace {
+
+std::string multi_rate_words(int max_substeps) {
+  return "multi-rate, at most " + std::to_string(max_substeps) + " sub-steps a window";
+}
+
+}  // namespace
+
+double window_added_mass_ratio(const AddedMassInputs& in) {
+  for (const double value :
+       {in.cfl, in.fluid_density, in.fluid_sound_speed, in.fluid_smoothing_length, in.solid_density,
+        in.solid_sound_speed, in.solid_smoothing_length, in.solid_thickness})
+    if (!(value > 0.0) || !std::isfinite(value))
+      throw std::invalid_argument("the added-mass ratio needs positive, finite inputs");
+  const double window = in.cfl * std::max(in.fluid_smoothing_length / in.fluid_sound_speed,
+                                          in.solid_smoothing_length / in.solid_sound_speed);
+  return in.fluid_density * in.fluid_sound_speed * window / (in.solid_density * in.solid_thickness);
+}
+
+SubstepChoice choose_substeps(const AddedMassInputs& in) {
+  const double mu = window_added_mass_ratio(in);
+  const bool multi_rate = mu <= kMaxWindowAddedMassRatio;
+  std::ostringstream why;
+  why << (multi_rate ? multi_rate_words(kAutomaticMaxSubsteps) : "synchronised")
+      << " (automatic: added-mass ratio of a window " << mu << (multi_rate ? " <= " : " > ")
+      << kMaxWindowAddedMassRatio << "; rho_f c_f W / (rho_s e) with rho_f " << in.fluid_density
+      << " kg/m^3, c_f " << in.fluid_sound_speed << " m/s, W <= " << in.cfl
+      << " max(h_f / c_f, h_s / c_s) = "
+      << in.cfl * std::max(in.fluid_smoothing_length / in.fluid_sound_speed,
+                           in.solid_smoothing_length / in.solid_sound_speed)
+      << " s, rho_s " << in.solid_density << " kg/m^3, e " << in.solid_thickness << " m)";
+  return {multi_rate ? kAutomaticMaxSubsteps : 1, mu, why.str()};
+}
+
+double solid_thickness(const sph::CaseFile& case_file) {
+  double thinnest = 0.0;
+  for (const auto& box : case_file.config.solid().body()) {
+    const double side = std::min(box.max().x() - box.min().x(), box.max().y() - box.min().y());
+    thinnest = thinnest == 0.0 ? side : std::min(thinnest, side);
+  }
+  return thinnest;
+}
+
+SubstepChoice read_substep_choice(const sph::CaseFile& case_file) {
+  const int set = case_file.config.coupling().max_substeps();
+  sph::require(set >= 0, case_file, "coupling.max_substeps",
+               "must not be negative (0: automatic, 1: synchronised, more: multi-rate)");
+  if (set >= 1)
+    return {set, -1.0,
+            (set == 1 ? std::string("synchronised") : multi_rate_words(set)) +
+                " (coupling.max_substeps " + std::to_string(set) + ", as set)"};
+  const double thickness = solid_thickness(case_file);
+  if (!(thickness > 0.0))
+    return {1, -1.0,
+            "synchronised (automatic: the case gives no solid.body to take the "
+            "structure's thickness from, so the added-mass ratio is unknown)"};
+  try {
+    const auto fluid = cosph::fluid::read_fluid_parameters(case_file);
+    const auto solid = cosph::solid::read_solid_parameters(case_file);
+    return choose_substeps(
+        {fluid.run.cfl, fluid.rho0, fluid.c0, fluid.h, solid.rho0, solid.c0, solid.h, thickness});
+  } catch (const sph::ConfigError& error) {
+    // The solvers check their own blocks; a solid program of the user's own
+    // may read fields the built-in solids refuse.
+    return {1, -1.0,
+            std::string("synchronised (automatic: the added-mass ratio is unknown, ") +
+                error.what() + ")"};
+  }
+}
+
+}  // namespace cosph::coupler

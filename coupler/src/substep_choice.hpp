@@ -1,0 +1,68 @@
+// Which stepping a coupled run takes: coupling.max_substeps as set (1 or
+// more), or, at 0, chosen by the added-mass ratio of a coupling window
+// (docs/auto_substeps.md).
+//
+// In a multi-rate window the cross-phase forces are held: the solid moves for
+// the whole window W under the force the water exerted at the window's start.
+// On times short against L / c_f a weakly compressible fluid answers a wall's
+// motion as an acoustic layer, p = rho_f c_f v: the water that responds
+// within W is the layer a sound wave crosses in W, rho_f c_f W per unit of
+// interface, not the incompressible rho_f L (van Brummelen 2009, J. Appl.
+// Mech. 76:021206; the incompressible case: Causin, Gerbeau & Nobile 2005,
+// CMAME 194:4506). A plate of mass rho_s e per unit of interface under that
+// load, held over the window, moves as v_next = (1 - mu_W) v with
+//     mu_W = rho_f c_f W / (rho_s e),
+// the added-mass ratio of a window: the held force overshoots past
+// mu_W = 1 and the plate's motion grows past mu_W = 2. Multi-rate coupling
+// is taken where mu_W <= 1, a safety factor 2 on the growth bound; otherwise
+// synchronised steps, whose window is the solid's own short step.
+//
+// W is bounded from the case alone: a window is never longer than the larger
+// of the two solvers' proposals, each at most cfl h / c (sphcore/time_step.hpp),
+// so W <= cfl max(h_f / c_f, h_s / c_s). The plan (cosph-case, which places
+// the processes on cores) and the coupler both decide before any step.
+#pragma once
+
+#include <string>
+
+#include "sphcore/case_file.hpp"
+
+namespace cosph::coupler {
+
+// The largest added-mass ratio of a window that multi-rate coupling may take.
+inline constexpr double kMaxWindowAddedMassRatio = 1.0;
+// Sub-steps a window may hold when chosen automatically: the cap the elastic
+// plate's multi-rate rows were validated with (scripts/validate_elastic_plate.py).
+inline constexpr int kAutomaticMaxSubsteps = 32;
+
+struct AddedMassInputs {
+  double cfl;
+  double fluid_density, fluid_sound_speed, fluid_smoothing_length;  // kg/m^3, m/s, m
+  double solid_density, solid_sound_speed, solid_smoothing_length;  // kg/m^3, m/s, m
+  double solid_thickness;  // m, e: the structure's extent along the interface normal
+};
+
+// mu_W for the longest window multi-rate coupling can take. Throws
+// std::invalid_argument unless every input is positive and finite.
+double window_added_mass_ratio(const AddedMassInputs& in);
+
+struct SubstepChoice {
+  int max_substeps;              // 1: synchronised; more: multi-rate (common_step.hpp)
+  double added_mass_ratio = -1;  // mu_W when chosen automatically, else -1
+  std::string reason;            // for the run's log: what was chosen and why
+};
+
+// The automatic choice from the added-mass ratio.
+SubstepChoice choose_substeps(const AddedMassInputs& in);
+
+// The case's coupling.max_substeps: >= 1 as set, 0 automatic. A case that
+// does not give what the rule needs (no solid.body, a solid program's own
+// fields) gets synchronised steps, the safe side, and the reason says so.
+// Throws sph::ConfigError for a negative value.
+SubstepChoice read_substep_choice(const sph::CaseFile& case_file);
+
+// The thinnest extent of the case's solid.body boxes, in m (0 without any):
+// the plate's thickness e, the lightest mass per unit of interface.
+double solid_thickness(const sph::CaseFile& case_file);
+
+}  // namespace cosph::coupler

@@ -1,0 +1,66 @@
+"""coupling.max_substeps 0 (every case's default): the coupler chooses
+multi-rate coupling for the elastic plate and synchronised steps for a plate
+20 times lighter than the water (coupler/src/substep_choice.hpp), says so on
+its first line, and then steps exactly as the explicit setting would."""
+import os
+import re
+import shutil
+import tempfile
+import unittest
+
+import numpy as np
+
+import case_runs
+
+
+def median_common_step(case, settings, end_time):
+    """The run's median common step (coupling.csv, every step), and its log."""
+    out = tempfile.mkdtemp(prefix=f"cosph_auto_{case}_")
+    try:
+        result = case_runs.run_case(case, out, settings + [
+            f"run.end_time={end_time}", f"run.snapshot_interval={end_time}"])
+        if result.returncode != 0:
+            raise AssertionError(result.stdout)
+        dt = case_runs.read_csv(os.path.join(out, "coupling.csv"))["dt"]
+        return float(np.median(dt[:-1])), result.stdout   # the last is cut to the end time
+    finally:
+        shutil.rmtree(out, ignore_errors=True)
+
+
+class AutomaticChoice:
+    """A default run against runs with the explicit settings it must equal
+    (SAME) and must not (OTHER)."""
+    SETTINGS, SAME, OTHER, CHOSEN, END_TIME = [], None, None, None, None
+
+    @classmethod
+    def setUpClass(cls):
+        cls.auto, cls.log = median_common_step("elastic_plate", cls.SETTINGS, cls.END_TIME)
+        cls.same, _ = median_common_step("elastic_plate", cls.SETTINGS + [cls.SAME], cls.END_TIME)
+        cls.other, _ = median_common_step("elastic_plate", cls.SETTINGS + [cls.OTHER],
+                                          cls.END_TIME)
+
+    def test_steps_as_the_chosen_setting(self):
+        # The two explicit settings step differently here, so the check tells them apart.
+        self.assertGreater(max(self.same, self.other) / min(self.same, self.other), 5.0)
+        self.assertAlmostEqual(self.auto / self.same, 1.0, delta=1e-3)
+
+    def test_says_what_it_chose_and_why(self):
+        line = re.search(r"sub-stepping: (.*)", self.log)
+        self.assertIsNotNone(line, self.log)
+        self.assertTrue(line.group(1).startswith(self.CHOSEN), line.group(1))
+        self.assertIn("added-mass ratio of a window", line.group(1))
+
+
+class ElasticPlateTakesMultiRate(AutomaticChoice, unittest.TestCase):
+    SAME, OTHER, CHOSEN = "coupling.max_substeps=32", "coupling.max_substeps=1", "multi-rate"
+    END_TIME = 0.001  # s: 26 windows, 480 synchronised steps
+
+
+class LightPlateTakesSynchronisedSteps(AutomaticChoice, unittest.TestCase):
+    SETTINGS = ["solid.density=50"]   # rho_s / rho_f = 0.05: multi-rate breaks (stability map)
+    SAME, OTHER, CHOSEN = "coupling.max_substeps=1", "coupling.max_substeps=32", "synchronised"
+    END_TIME = 0.0003  # s: some 700 synchronised steps
+
+
+if __name__ == "__main__":
+    unittest.main()

@@ -1,0 +1,119 @@
+// The automatic choice of sub-steps (coupler/src/substep_choice.hpp): the
+// added-mass ratio of a window against its bound, on both sides and at it,
+// bad inputs, and the case's coupling.max_substeps read as set or automatic.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sphcore/case_file.hpp"
+#include "substep_choice.hpp"
+
+namespace {
+
+using cosph::coupler::AddedMassInputs;
+using cosph::coupler::choose_substeps;
+using cosph::coupler::read_substep_choice;
+using cosph::coupler::window_added_mass_ratio;
+
+// cases/elastic_plate.pbtxt: water 2 mm at c_f = 10 sqrt(2 g 0.14 m), rubber
+// 1 mm at c_s = sqrt((K + 4G/3) / rho_s), the plate 5 mm thick.
+AddedMassInputs elastic_plate(double solid_density = 1100.0) {
+  const double c_f = 10.0 * std::sqrt(2.0 * 9.81 * 0.14);
+  const double E = 12.0e6, nu = 0.4;
+  const double K = E / (3.0 * (1.0 - 2.0 * nu)), G = E / (2.0 * (1.0 + nu));
+  const double c_s = std::sqrt((K + 4.0 * G / 3.0) / solid_density);
+  return {0.25, 1000.0, c_f, 1.3 * 0.002, solid_density, c_s, 1.3 * 0.001, 0.005};
+}
+
+sph::CaseFile elastic_plate_case(std::vector<std::string> overrides = {}) {
+  return sph::load_case(COSPH_SOURCE_DIR "/cases/elastic_plate.pbtxt", overrides);
+}
+
+TEST(SubstepChoice, TheElasticPlateTakesMultiRate) {
+  const auto choice = choose_substeps(elastic_plate());
+  // The water's step bounds the window: mu_W = cfl rho_f h_f / (rho_s e).
+  EXPECT_NEAR(choice.added_mass_ratio, 0.25 * 1000.0 * 0.0026 / (1100.0 * 0.005), 1e-12);
+  EXPECT_EQ(choice.max_substeps, cosph::coupler::kAutomaticMaxSubsteps);
+  EXPECT_NE(choice.reason.find("multi-rate"), std::string::npos) << choice.reason;
+}
+
+TEST(SubstepChoice, ALightPlateTakesSynchronisedSteps) {
+  // rho_s / rho_f = 0.05: multi-rate stops there in the stability map.
+  const auto choice = choose_substeps(elastic_plate(50.0));
+  EXPECT_GT(choice.added_mass_ratio, cosph::coupler::kMaxWindowAddedMassRatio);
+  EXPECT_EQ(choice.max_substeps, 1);
+  EXPECT_EQ(choice.reason.rfind("synchronised", 0), 0u) << choice.reason;
+}
+
+TEST(SubstepChoice, TheBoundItselfIsStillMultiRate) {
+  // Powers of two, so that mu_W is exactly 1: W = 0.5 max(1/1, 0.5/1) = 0.5.
+  AddedMassInputs at_bound{0.5, 1.0, 1.0, 1.0, 0.5, 1.0, 0.5, 1.0};
+  ASSERT_EQ(window_added_mass_ratio(at_bound), 1.0);
+  EXPECT_GT(choose_substeps(at_bound).max_substeps, 1);
+  AddedMassInputs just_lighter = at_bound;
+  just_lighter.solid_density = std::nextafter(0.5, 0.0);
+  EXPECT_EQ(choose_substeps(just_lighter).max_substeps, 1);
+}
+
+TEST(SubstepChoice, TheSlowerSolverSetsTheWindow) {
+  // A solid softer than the water proposes the longer step: it bounds W.
+  AddedMassInputs soft{0.5, 1.0, 1.0, 1.0, 4.0, 0.25, 1.0, 1.0};
+  EXPECT_DOUBLE_EQ(window_added_mass_ratio(soft), 1.0 * 1.0 * (0.5 * 4.0) / (4.0 * 1.0));
+}
+
+TEST(SubstepChoice, RefusesInputsThatAreNotPositive) {
+  for (double AddedMassInputs::*field :
+       {&AddedMassInputs::solid_thickness, &AddedMassInputs::solid_density,
+        &AddedMassInputs::fluid_sound_speed, &AddedMassInputs::cfl}) {
+    for (double bad : {0.0, -1.0, std::numeric_limits<double>::quiet_NaN(),
+                       std::numeric_limits<double>::infinity()}) {
+      AddedMassInputs in = elastic_plate();
+      in.*field = bad;
+      EXPECT_THROW(choose_substeps(in), std::invalid_argument) << bad;
+    }
+  }
+}
+
+TEST(SubstepChoice, TheCaseIsAutomaticByDefault) {
+  const auto choice = read_substep_choice(elastic_plate_case());
+  EXPECT_EQ(choice.max_substeps, cosph::coupler::kAutomaticMaxSubsteps);
+  EXPECT_NEAR(choice.added_mass_ratio, choose_substeps(elastic_plate()).added_mass_ratio, 1e-9);
+  EXPECT_EQ(read_substep_choice(elastic_plate_case({"solid.density=50"})).max_substeps, 1);
+}
+
+TEST(SubstepChoice, AnExplicitValueMeansWhatItSays) {
+  for (int set : {1, 5, 64}) {
+    const auto choice =
+        read_substep_choice(elastic_plate_case({"coupling.max_substeps=" + std::to_string(set)}));
+    EXPECT_EQ(choice.max_substeps, set);
+    EXPECT_LT(choice.added_mass_ratio, 0.0);
+    EXPECT_NE(choice.reason.find("as set"), std::string::npos) << choice.reason;
+  }
+  // Multi-rate on a plate the rule would keep synchronised, because asked.
+  EXPECT_EQ(
+      read_substep_choice(elastic_plate_case({"solid.density=50", "coupling.max_substeps=32"}))
+          .max_substeps,
+      32);
+  EXPECT_THROW(read_substep_choice(elastic_plate_case({"coupling.max_substeps=-1"})),
+               sph::ConfigError);
+}
+
+TEST(SubstepChoice, ACaseWithoutWhatTheRuleNeedsIsSynchronised) {
+  // The thickness comes from solid.body; the coupler-with-dummies cases have none.
+  const std::string path = ::testing::TempDir() + "no_body.pbtxt";
+  {
+    std::ofstream file(path);
+    file << "run { end_time: 0.01 }\nfluid { spacing: 0.001 }\nsolid { spacing: 0.001 }\n";
+  }
+  const auto choice = read_substep_choice(sph::load_case(path, {}));
+  EXPECT_EQ(choice.max_substeps, 1);
+  EXPECT_NE(choice.reason.find("solid.body"), std::string::npos) << choice.reason;
+  EXPECT_DOUBLE_EQ(cosph::coupler::solid_thickness(elastic_plate_case()), 0.105 - 0.1);
+}
+
+}  // namespace
