@@ -16,12 +16,13 @@ namespace cosph::coupling {
 template <class Solver>
 int run_solver(Solver& solver, const sph::RunParameters& run, const sph::CaseFile& case_file,
                const sph::SolverArgs& args, const std::string& name, PhaseKind phase,
-               const std::string& description) {
+               const std::string& description, sph::RunThreads& threads) {
   if (!args.endpoint.empty()) {
     const double timeout =
         case_file.config.coupling().timeout() > 0.0 ? case_file.config.coupling().timeout() : 10.0;
     CoupledRun<Solver> coupled(solver, run,
                                {args.out_dir, name, phase, description, args.endpoint, timeout});
+    coupled.revise_threads_with(threads);
     return coupled.run();
   }
   std::vector<sph::Column> columns;
@@ -31,6 +32,7 @@ int run_solver(Solver& solver, const sph::RunParameters& run, const sph::CaseFil
     for (const sph::Gauge& gauge : s.gauge_values()) values.push_back(gauge.value);
     return values;
   });
+  alone.revise_threads_with(threads);
   return alone.run();
 }
 
