@@ -1,10 +1,13 @@
 #!/usr/bin/python3
 """Runs build/bin/cosph-bench (particle-steps per second, time per step) and
 build/bin/cosph-bench-messaging (the coupling's round trip), and writes
-docs/results/benchmark.md and docs/results/messaging.md. Not part of the test
-suite.
+docs/results/benchmark.md and docs/results/messaging.md. With --busy, whole
+runs on a quiet machine and beside a competing busy process instead
+(scripts/busy_machine.py), into docs/results/busy_machine.md. Not part of the
+test suite.
 
-usage: /usr/bin/python3 scripts/benchmark.py [--steps N] [--repeat R]"""
+usage: /usr/bin/python3 scripts/benchmark.py [--steps N] [--repeat R]
+       /usr/bin/python3 scripts/benchmark.py --busy [--repeat R] [--end-time T] [--candidates]"""
 import argparse
 import math
 import os
@@ -12,15 +15,27 @@ import platform
 import statistics
 import subprocess
 
+import busy_machine
 import cosph_results as cr
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--steps", type=int, default=200)
-    parser.add_argument("--repeat", type=int, default=7,
-                        help="runs, interleaved; each row keeps its best and its median")
+    parser.add_argument("--repeat", type=int,
+                        help="runs, interleaved; each row keeps its best and its median "
+                             "(default 7; --busy: rounds, default 3)")
+    parser.add_argument("--busy", action="store_true",
+                        help="the busy-machine mode: whole runs, quiet and beside a busy loop")
+    parser.add_argument("--end-time", type=float, default=0.02,
+                        help="--busy: simulated time of each run (s)")
+    parser.add_argument("--candidates", action="store_true",
+                        help="--busy: also the runtimes the default was chosen against")
     args = parser.parse_args()
+    if args.busy:
+        busy_machine.run(args.repeat or 3, args.end_time, args.candidates)
+        return
+    args.repeat = args.repeat or 7
     bin_dir = os.environ.get("COSPH_BIN", os.path.join(cr.REPO, "build", "bin"))
     binary = os.path.join(bin_dir, "cosph-bench")
     # Best of --repeat runs: on a shared machine the slow runs measure the

@@ -11,7 +11,8 @@ from .errors import EXIT_BAD_INPUT, EXIT_FAILURE, EXIT_INTERRUPTED, EXIT_OK, Exi
 from .locate import (BUILD_HINT, available_cases, bin_dir, check_sets, find_exe, repo_dir,
                      resolve_case)
 from .output_dir import prepare_out_dir
-from .plan import check_endpoint, child_commands, core_placement, default_endpoint, run_plan
+from .plan import (check_endpoint, child_commands, core_placement, default_endpoint, pinning_pays,
+                   run_plan)
 from .supervise import Child, Run, SignalState
 
 def print_summary(out, wall_s, children):
@@ -63,9 +64,14 @@ def build_parser(repo):
                      help="coupling endpoint for multi-process runs "
                           "(default ipc://DIR/coupler.sock)")
     run.add_argument("--quiet", action="store_true", help="show no progress")
-    run.add_argument("--no-pin", action="store_true",
+    pin = run.add_mutually_exclusive_group()
+    pin.add_argument("--no-pin", action="store_true",
                      help="in a multi-rate run, let the scheduler place the solvers "
                           "instead of giving each cores of its own")
+    pin.add_argument("--pin", action="store_true",
+                     help="in a multi-rate run, give each solver cores of its own even when "
+                          "other processes keep the cores busy (by default, only when the "
+                          "cores are free)")
     add_plot_parser(sub)
     return parser
 
@@ -129,8 +135,12 @@ def cmd_run(args, repo, signals):
     elif args.endpoint:
         emit(sys.stderr, f"cosph: note: --endpoint is not used, {names[0]} runs alone\n")
     commands = child_commands(names, folder, case, out, args.set, endpoint)
-    placement = {} if args.no_pin else core_placement(names, separate_cores,
-                                                      os.sched_getaffinity(0))
+    allowed = os.sched_getaffinity(0)
+    placement = {} if args.no_pin else core_placement(names, separate_cores, allowed)
+    if placement and not args.pin and not pinning_pays(allowed):
+        placement = {}
+        emit(sys.stderr, "cosph: multi-rate run: other processes keep the cores busy, so the "
+                         "scheduler places the solvers (--pin: cores of their own anyway)\n")
     prepare_out_dir(out, case, plan_cmd, commands, [placement.get(n) for n in names])
 
     mode = "quiet" if args.quiet else ("tty" if sys.stderr.isatty() else "plain")

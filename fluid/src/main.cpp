@@ -8,6 +8,7 @@
 #include "fluid_solver.hpp"
 #include "participant/run_solver.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/run_threads.hpp"
 #include "sphcore/solver_cli.hpp"
 
 namespace {
@@ -34,9 +35,9 @@ int run_fluid(int argc, char** argv) {
             << " m, c0 = " << parameters.c0 << " m/s, " << omp_get_max_threads() << " threads"
             << std::endl;
 
-  const int status =
-      cosph::coupling::run_solver(solver, parameters.run, case_file, args, "fluid",
-                                  cosph::coupling::PhaseKind::fluid, "cosph-fluid (WCSPH)");
+  const int status = cosph::coupling::run_solver(solver, parameters.run, case_file, args, "fluid",
+                                                 cosph::coupling::PhaseKind::fluid,
+                                                 "cosph-fluid (WCSPH)", threads);
   if (solver.spray_removed() > 0)
     std::cout << "cosph-fluid: " << solver.spray_removed()
               << (solver.spray_removed() == 1 ? " water particle" : " water particles")

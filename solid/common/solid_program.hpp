@@ -14,6 +14,7 @@
 #include "participant/run_solver.hpp"
 #include "solid_parameters.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/run_threads.hpp"
 #include "sphcore/solver_cli.hpp"
 
 namespace cosph::solid {
@@ -57,7 +58,7 @@ int run_solid_program(int argc, char** argv, const SolidProgram<Solver>& program
     for (const std::string& note : program.unused_settings(case_file, parameters))
       std::cout << program.name << ": note: " << note << std::endl;
     return coupling::run_solver(solver, parameters.run, case_file, args, "solid",
-                                coupling::PhaseKind::solid, program.protocol_name);
+                                coupling::PhaseKind::solid, program.protocol_name, threads);
   });
 }
 

@@ -37,28 +37,3 @@ Resolution read_resolution(const CaseFile& case_file, const std::string& block, 
 }
 
 }  // namespace sph
-
-#include <omp.h>
-
-#include <algorithm>
-
-namespace sph {
-
-int choose_threads(int requested, std::size_t particles, int available) {
-  if (requested > 0) return requested;
-  constexpr std::size_t kParticlesPerThread = 4000;
-  const int useful = static_cast<int>(std::max<std::size_t>(1, particles / kParticlesPerThread));
-  return std::min(useful, available);
-}
-
-RunThreads::RunThreads(int requested) : requested_(requested), available_(omp_get_max_threads()) {
-  omp_set_num_threads(requested > 0 ? requested : 1);
-}
-
-int RunThreads::settle(std::size_t particles) {
-  const int threads = choose_threads(requested_, particles, available_);
-  omp_set_num_threads(threads);
-  return threads;
-}
-
-}  // namespace sph

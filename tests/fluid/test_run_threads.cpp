@@ -1,7 +1,8 @@
 // A solver's OpenMP threads are set in two steps (sph::RunThreads): building
 // the solver must start no thread that the run will not use, since such a
 // thread stays for the whole run and, under OMP_WAIT_POLICY=active, spins on
-// a core that the other processes of a coupled run need.
+// a core that the other processes of a coupled run need. The run takes no
+// more threads than the cores other processes leave free, and follows them.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -11,7 +12,9 @@
 #include "fluid_parameters.hpp"
 #include "fluid_solver.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/free_cores.hpp"
 #include "sphcore/run_parameters.hpp"
+#include "sphcore/run_threads.hpp"
 
 namespace cosph::fluid {
 namespace {
@@ -39,16 +42,56 @@ TEST(RunThreads, BuildingTheSolverStartsNoThreadTheRunDoesNotUse) {
   EXPECT_EQ(threads_of_this_process(), before);
 }
 
+// The cores other processes leave, as a fake meter reports them.
+sph::RunThreads::CoresLeft reporting(const double& cores_left) {
+  return [&cores_left] { return cores_left; };
+}
+
 TEST(RunThreads, OnePerFourThousandParticlesUpToTheCoresUnlessRequested) {
   omp_set_num_threads(2);
-  sph::RunThreads automatic(0);
+  const double quiet = 2.0;
+  sph::RunThreads automatic(0, reporting(quiet));
   EXPECT_EQ(omp_get_max_threads(), 1);  // while the solver is built
   EXPECT_EQ(automatic.settle(3000), 1);
   EXPECT_EQ(automatic.settle(9000), 2);
   EXPECT_EQ(automatic.settle(90000), 2);  // no more than OpenMP had
-  sph::RunThreads requested(3);
+  const double one_core_busy = 1.0;
+  sph::RunThreads requested(3, reporting(one_core_busy));
   EXPECT_EQ(omp_get_max_threads(), 3);
   EXPECT_EQ(requested.settle(100), 3);
+  EXPECT_EQ(requested.revise_now(), 3);  // the count asked for, busy or not
+}
+
+TEST(RunThreads, NoMoreThanTheCoresOtherProcessesLeave) {
+  EXPECT_EQ(sph::choose_threads(0, 90000, 2, 2.0), 2);
+  EXPECT_EQ(sph::choose_threads(0, 90000, 2, 1.8), 2);  // others use a fifth of a core
+  EXPECT_EQ(sph::choose_threads(0, 90000, 2, 1.7), 1);  // ... and a third
+  EXPECT_EQ(sph::choose_threads(0, 90000, 2, 1.0), 1);  // one busy loop
+  EXPECT_EQ(sph::choose_threads(0, 90000, 2, 0.0), 1);  // at least one
+  EXPECT_EQ(sph::choose_threads(0, 90000, 4, 2.9), 3);
+}
+
+TEST(RunThreads, FollowTheFreeCoresDuringTheRun) {
+  omp_set_num_threads(2);
+  double cores_left = 2.0;
+  sph::RunThreads automatic(0, reporting(cores_left));
+  EXPECT_EQ(automatic.settle(90000), 2);
+  cores_left = 1.0;                  // an outside job starts
+  EXPECT_EQ(automatic.revise(), 2);  // within the second: not looked at yet
+  EXPECT_EQ(automatic.revise_now(), 1);
+  EXPECT_EQ(omp_get_max_threads(), 1);
+  cores_left = 1.9;  // it stopped
+  EXPECT_EQ(automatic.revise_now(), 2);
+  EXPECT_EQ(omp_get_max_threads(), 2);
+}
+
+// Other processes' CPU time is the machine's less this process's own.
+TEST(FreeCores, TheMachinesBusyTimeLessThisProcesss) {
+  const sph::CpuTimes before{10.0, 100.0, 20.0};
+  // Over 2 s: the machine busy for 3.5 core-seconds, this process for 1.5 of them.
+  EXPECT_DOUBLE_EQ(sph::cores_left_by_others(before, {12.0, 103.5, 21.5}, 2), 1.0);
+  EXPECT_DOUBLE_EQ(sph::cores_left_by_others(before, {12.0, 101.5, 21.5}, 2), 2.0);
+  EXPECT_DOUBLE_EQ(sph::cores_left_by_others(before, {12.0, 106.0, 20.0}, 2), 0.0);  // clamped
 }
 
 }  // namespace

@@ -72,11 +72,11 @@ class ThirdPartySolid(unittest.TestCase):
         program.chmod(0o755 if executable else 0o644)
         return program
 
-    def launch(self, case_text, **env):
+    def launch(self, case_text, *extra, **env):
         case = self.cases / "plate.pbtxt"
         case.write_text(case_text)
         proc = subprocess.run([str(REPO / "coupler" / "cosph"), "run", str(case),
-                               "--out", str(self.out), "--quiet"],
+                               "--out", str(self.out), "--quiet", *extra],
                               env={**self.env, **env}, stdin=subprocess.DEVNULL,
                               capture_output=True, text=True, timeout=60)
         return case, proc
@@ -119,7 +119,8 @@ class ThirdPartySolid(unittest.TestCase):
         for max_substeps in (1, 32):
             text = coupled_case("my-solid").replace(
                 "max_substeps: 0", f"max_substeps: {max_substeps}", 1)
-            _, proc = self.launch(text)
+            # --pin: as on free cores, whatever else this machine runs.
+            _, proc = self.launch(text, "--pin")
             self.assertEqual(proc.returncode, 0, proc.stderr)
             cores[max_substeps] = {name: json.loads((self.state / f"{name}.cores").read_text())
                                    for name in ("cosph-coupler", "cosph-fluid", "my-solid")}

@@ -33,6 +33,7 @@
 #include "sphcore/region.hpp"
 #include "sphcore/run_control.hpp"
 #include "sphcore/run_parameters.hpp"
+#include "sphcore/run_threads.hpp"
 #include "sphcore/runaway_error.hpp"
 #include "sphcore/snapshot_writer.hpp"
 
@@ -63,6 +64,9 @@ class CoupledRun {
         settings_(std::move(settings)),
         snapshots_(settings_.out_dir, settings_.name),
         participant_(settings_.endpoint, settings_.timeout_seconds) {}
+
+  // After every step, threads.revise(): the thread count follows the free cores.
+  void revise_threads_with(sph::RunThreads& threads) { threads_ = &threads; }
 
   // Returns 0 when the coupler stopped the run at its end, 130 on Ctrl-C.
   int run() {
@@ -109,6 +113,7 @@ class CoupledRun {
           reply = begin_step_with_exchange(dt, reply.send_region);
         solver_.end_step(dt);
       }
+      if (threads_ != nullptr) threads_->revise();
       progress.report(solver_.time(), solver_.steps(), dt);
     }
     progress.report(solver_.time(), solver_.steps(), 0.0, true);
@@ -187,6 +192,7 @@ class CoupledRun {
   }
 
   Solver& solver_;
+  sph::RunThreads* threads_ = nullptr;
   sph::RunParameters run_;
   CoupledRunSettings settings_;
   sph::SnapshotWriter snapshots_;

@@ -18,11 +18,12 @@ namespace cosph::coupling {
 template <class Solver>
 int run_solver(Solver& solver, const sph::RunParameters& run, const sph::CaseFile& case_file,
                const sph::SolverArgs& args, const std::string& name, PhaseKind phase,
-               const std::string& description) {
+               const std::string& description, sph::RunThreads& threads) {
   if (!args.endpoint.empty()) {
     const double timeout = coupling_timeout_seconds(case_file);
     CoupledRun<Solver> coupled(solver, run,
                                {args.out_dir, name, phase, description, args.endpoint, timeout});
+    coupled.revise_threads_with(threads);
     return coupled.run();
   }
   std::vector<sph::Column> columns;
@@ -32,6 +33,7 @@ int run_solver(Solver& solver, const sph::RunParameters& run, const sph::CaseFil
     for (const sph::Gauge& gauge : s.gauge_values()) values.push_back(gauge.value);
     return values;
   });
+  alone.revise_threads_with(threads);
   return alone.run();
 }
 

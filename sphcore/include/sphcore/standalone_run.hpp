@@ -13,6 +13,7 @@
 
 #include "sphcore/run_control.hpp"
 #include "sphcore/run_parameters.hpp"
+#include "sphcore/run_threads.hpp"
 #include "sphcore/runaway_error.hpp"
 #include "sphcore/snapshot_writer.hpp"
 #include "sphcore/timeseries_writer.hpp"
@@ -32,6 +33,9 @@ class StandaloneRun {
         snapshots_(out_dir, name),
         timeseries_(out_dir + "/timeseries.csv", with_time(std::move(columns))),
         row_(std::move(row)) {}
+
+  // After every step, threads.revise(): the thread count follows the free cores.
+  void revise_threads_with(RunThreads& threads) { threads_ = &threads; }
 
   // Returns 0 when the end time was reached, 130 when stopped by a signal.
   int run() {
@@ -64,6 +68,7 @@ class StandaloneRun {
         throw RunawayError(std::string(error.what()) + ". Last good state (t = " +
                            std::to_string(last_good_time_) + " s) kept in " + path);
       }
+      if (threads_ != nullptr) threads_->revise();
       progress.report(solver_.time(), solver_.steps(), dt);
     }
     progress.report(solver_.time(), solver_.steps(), dt, true);
@@ -88,6 +93,7 @@ class StandaloneRun {
   SnapshotWriter snapshots_;
   TimeSeriesWriter timeseries_;
   Row row_;
+  RunThreads* threads_ = nullptr;
   std::optional<Snapshot> last_good_;
   double last_good_time_ = 0.0;
 };

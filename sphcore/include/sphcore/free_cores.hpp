@@ -1,0 +1,41 @@
+// How much of the machine other processes leave to this one: the CPU time the
+// whole machine spent busy (/proc/stat, steal time included, as a virtual
+// machine's host takes it) less this process's own (getrusage), per second of
+// wall time, between two samples. A solver's loops end at barriers that wait
+// for their slowest thread, so a thread whose core another process holds
+// stalls every loop: the thread count follows the cores that are free.
+#pragma once
+
+namespace sph {
+
+// Seconds since some fixed point; wall time, and CPU time summed over cores.
+struct CpuTimes {
+  double wall = 0.0;
+  double machine_busy = 0.0;  // every process on every core, this one included
+  double own = 0.0;           // this process, all its threads
+};
+
+// Now. Without /proc/stat, machine_busy is taken to be this process's own.
+CpuTimes cpu_times_now();
+
+// The cores left by other processes between the two samples: `cores` less
+// their CPU time per second of wall time, never below 0 nor above `cores`.
+double cores_left_by_others(const CpuTimes& earlier, const CpuTimes& later, int cores);
+
+// Each call of cores_left(): the cores of the machine that other processes
+// left over the time since the call before (the first: since construction).
+// A window shorter than kShortestWindow is waited out: /proc/stat counts in
+// ticks of 10 ms, and two cores give 20 of them in 0.1 s.
+class FreeCoreMeter {
+ public:
+  static constexpr double kShortestWindow = 0.1;  // s
+
+  FreeCoreMeter();
+  double cores_left();
+
+ private:
+  int cores_;
+  CpuTimes last_;
+};
+
+}  // namespace sph
