@@ -24,7 +24,7 @@ run.end_time, output_interval, snapshot_interval, threads; solid.model,
 spacing, density, youngs_modulus, poisson_ratio, body, clamp, tip_gauge;
 coupling.timeout; and accept solid.executable (the launcher's field).
 
-What is checked (docs/writing_a_solid_model.md explains why):
+What is checked (docs/coupling.md, "A solid model of your own" explains why):
   Plan           cosph-case plan, asked which programs a case naming the solid
                  in solid.executable needs, answers with this solid.
   BadInput       a bad solid parameter is refused naming the case file and the
