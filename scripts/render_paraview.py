@@ -1,7 +1,7 @@
 """A picture of one moment of a cosph run, made by ParaView from the run's
 snapshots with ParaView's default XDMF reader (docs/paraview.md): the water
 coloured by pressure, the walls grey (a Threshold on `kind`), the solid, if
-the run has one, coloured by its von Mises stress.
+the run has one (a solid run alone has no water), coloured by its von Mises stress.
 
 Not part of the tests. Needs ParaView (Debian: apt-get install paraview
 xvfb); without a display run it under xvfb:
@@ -30,7 +30,7 @@ TITLE_HEIGHT = 50
 
 def parse_args():
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("outdir", help="a run's output folder (holds fluid.xdmf)")
+    parser.add_argument("outdir", help="a run's output folder (holds fluid.xdmf, solid.xdmf or both)")
     parser.add_argument("--out", default="picture.png", help="the PNG to write")
     parser.add_argument("--time", type=float, default=None, help="s; default the last snapshot")
     parser.add_argument("--width", type=int, default=1400, help="pixels")
@@ -110,12 +110,15 @@ def main():
     args = parse_args()
     fluid_path = os.path.join(args.outdir, "fluid.xdmf")
     solid_path = os.path.join(args.outdir, "solid.xdmf")
-    if not os.path.isfile(fluid_path):
-        sys.exit(f"render_paraview: {fluid_path} does not exist (is {args.outdir} a cosph run?)")
+    has_fluid, has_solid = os.path.isfile(fluid_path), os.path.isfile(solid_path)
+    if not has_fluid and not has_solid:
+        sys.exit(f"render_paraview: neither {fluid_path} nor {solid_path} exists "
+                 f"(is {args.outdir} a cosph run?)")
 
     # OpenDataFile picks the reader ParaView's File > Open would (Xdmf3ReaderS).
-    fluid = pv.OpenDataFile(fluid_path)
-    time = snapshot_time(fluid, args.time)
+    fluid = pv.OpenDataFile(fluid_path) if has_fluid else None
+    solid = pv.OpenDataFile(solid_path) if has_solid else None
+    time = snapshot_time(fluid or solid, args.time)
     view = pv.CreateView("RenderView")
     view.ViewTime = time
     view.OrientationAxesVisibility = 0
@@ -123,26 +126,26 @@ def main():
     if hasattr(view, "UseColorPaletteForBackground"):
         view.UseColorPaletteForBackground = 0
 
-    water = kind_threshold(fluid, WATER)
-    walls = kind_threshold(fluid, WALL)
-    fluid_spacing = particle_spacing(fluid, time)
-    water_display = show_particles(water, view, fluid_spacing)
-    colour_by(water_display, view, "pressure", "water pressure (Pa)", "Cool to Warm",
-              PARTICLES_WIDTH + 0.02)
-    walls_display = show_particles(walls, view, fluid_spacing)
-    pv.ColorBy(walls_display, None)
-    walls_display.AmbientColor = walls_display.DiffuseColor = WALL_GREY
-
-    shown = ["water by pressure", "walls grey"]
-    solids = []
-    if os.path.isfile(solid_path):
-        solid = pv.OpenDataFile(solid_path)
-        solids.append(solid)
+    shown, sources = [], []
+    if fluid:
+        sources.append(fluid)
+        water = kind_threshold(fluid, WATER)
+        walls = kind_threshold(fluid, WALL)
+        fluid_spacing = particle_spacing(fluid, time)
+        water_display = show_particles(water, view, fluid_spacing)
+        colour_by(water_display, view, "pressure", "water pressure (Pa)", "Cool to Warm",
+                  PARTICLES_WIDTH + 0.02)
+        walls_display = show_particles(walls, view, fluid_spacing)
+        pv.ColorBy(walls_display, None)
+        walls_display.AmbientColor = walls_display.DiffuseColor = WALL_GREY
+        shown += ["water by pressure", "walls grey"]
+    if solid:
+        sources.append(solid)
         solid_display = show_particles(solid, view, particle_spacing(solid, time))
         solid.UpdatePipeline(time)
         if "von_mises" in solid.PointData.keys():
             colour_by(solid_display, view, "von_mises", "solid von Mises stress (Pa)",
-                      "Viridis (matplotlib)", PARTICLES_WIDTH + 0.15)
+                      "Viridis (matplotlib)", PARTICLES_WIDTH + (0.15 if fluid else 0.02))
             shown.append("solid by von Mises stress")
         else:
             pv.ColorBy(solid_display, None)
@@ -156,7 +159,7 @@ def main():
 
     # A flat picture of the x-y plane: the particles on the left, framed with
     # a margin, the colour bars in a column of their own on the right.
-    x0, x1, y0, y1 = bounds([fluid] + solids, time)
+    x0, x1, y0, y1 = bounds(sources, time)
     margin = 0.03 * (x1 - x0)
     x0, x1, y0, y1 = x0 - margin, x1 + margin, y0 - margin, y1 + margin
     scale = PARTICLES_WIDTH * args.width / (x1 - x0)  # pixels per metre
