@@ -109,11 +109,66 @@ bool Shape::outline_contains(const Vec2& p) const {
   return inside;
 }
 
+bool Shape::in_a_hole(const Vec2& p) const {
+  return std::any_of(holes_.begin(), holes_.end(), [&](const Shape& hole) {
+    return hole.contains(p) && hole.nearest_surface(p).distance > 0.0;
+  });
+}
+
 bool Shape::contains(const Vec2& p) const {
-  if (!outline_contains(p)) return false;
+  return outline_contains(p) && !in_a_hole(p);
+}
+
+std::vector<double> Shape::outline_crossings(const Vec2& a, const Vec2& b) const {
+  const Vec2 d = b - a;
+  std::vector<double> crossings;
+  if (kind_ == Kind::circle) {
+    // |a + t d - c|^2 = r^2
+    const Vec2 f = a - vertices_[0];
+    const double A = d.squaredNorm(), B = 2.0 * f.dot(d), C = f.squaredNorm() - radius_ * radius_;
+    const double discriminant = B * B - 4.0 * A * C;
+    if (A == 0.0 || discriminant < 0.0) return crossings;
+    for (const double sign : {-1.0, 1.0}) {
+      const double t = (-B + sign * std::sqrt(discriminant)) / (2.0 * A);
+      if (t >= 0.0 && t <= 1.0) crossings.push_back(t);
+    }
+    return crossings;
+  }
+  std::vector<Vec2> corners = vertices_;
+  if (kind_ == Kind::box) {
+    const Vec2 lo = vertices_[0], hi = vertices_[1];
+    corners = {lo, Vec2(hi.x(), lo.y()), hi, Vec2(lo.x(), hi.y())};
+  }
+  for (std::size_t i = 0, n = corners.size(); i < n; ++i) {
+    const Vec2& e0 = corners[i];
+    const Vec2& e1 = corners[(i + 1) % n];
+    if (!segments_meet(a, b, e0, e1)) continue;
+    const double across = cross(d, e1 - e0);
+    // Along the edge: its nearer end is where the segment first touches it.
+    const double t = across != 0.0 ? cross(e0 - a, e1 - e0) / across
+                     : d.squaredNorm() > 0.0
+                         ? std::min((e0 - a).dot(d), (e1 - a).dot(d)) / d.squaredNorm()
+                         : 0.0;
+    crossings.push_back(std::clamp(t, 0.0, 1.0));
+  }
+  return crossings;
+}
+
+bool Shape::meets(const Vec2& a, const Vec2& b) const {
+  const Bounds box = bounds();
+  if (std::max(a.x(), b.x()) < box.min.x() || std::min(a.x(), b.x()) > box.max.x() ||
+      std::max(a.y(), b.y()) < box.min.y() || std::min(a.y(), b.y()) > box.max.y())
+    return false;
+  if (contains(a) || contains(b)) return true;
+  // Neither end inside: the segment meets the region where it crosses the
+  // outline, or a hole's edge inside the outline, outside every hole.
+  const auto at = [&](double t) -> Vec2 { return a + t * (b - a); };
+  for (const double t : outline_crossings(a, b))
+    if (!in_a_hole(at(t))) return true;
   for (const Shape& hole : holes_)
-    if (hole.contains(p) && hole.nearest_surface(p).distance > 0.0) return false;
-  return true;
+    for (const double t : hole.outline_crossings(a, b))
+      if (outline_contains(at(t)) && !in_a_hole(at(t))) return true;
+  return false;
 }
 
 SurfacePoint Shape::nearest_on_outline(const Vec2& p) const {
@@ -241,6 +296,15 @@ std::optional<std::string> polygon_defect(const std::vector<Vec2>& v) {
   const double scale = (b.max - b.min).squaredNorm();
   if (std::abs(signed_area(v)) <= 1e-12 * scale) return std::string("the polygon has no area");
   return std::nullopt;
+}
+
+double thickness(const Shape& shape, double spacing) {
+  const Bounds b = shape.bounds();
+  if (shape.kind() == Shape::Kind::box && shape.holes().empty())
+    return std::min(b.max.x() - b.min.x(), b.max.y() - b.min.y());
+  double deepest = 0.0;
+  for (const Vec2& x : fill(shape, spacing)) deepest = std::max(deepest, shape.depth(x));
+  return 2.0 * deepest;
 }
 
 std::vector<Vec2> fill(const Shape& shape, double spacing) {
