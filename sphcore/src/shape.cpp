@@ -321,10 +321,16 @@ std::vector<Vec2> fill(const Shape& shape, double spacing) {
   const long ny = count(b.max.y() - b.min.y());
   std::vector<Vec2> points;
   points.reserve(static_cast<std::size_t>(std::max(nx, 0L) * std::max(ny, 0L)));
+  // The coordinates rounded exactly as the box fill of every earlier case
+  // (built with FMA contraction) rounded them, so that those cases keep their
+  // results bit for bit: x = min_x + (i + 1/2) dx in one rounding, a fused
+  // multiply-add; y = min_y + (j + 1/2) dx in two, the product rounded on its
+  // own (volatile, so that the compiler cannot fuse it into the sum).
   for (long j = 0; j < ny; ++j) {
+    const volatile double row_offset = (static_cast<double>(j) + 0.5) * spacing;
+    const double y = b.min.y() + row_offset;
     for (long i = 0; i < nx; ++i) {
-      const Vec2 x(b.min.x() + (static_cast<double>(i) + 0.5) * spacing,
-                   b.min.y() + (static_cast<double>(j) + 0.5) * spacing);
+      const Vec2 x(std::fma(static_cast<double>(i) + 0.5, spacing, b.min.x()), y);
       if (box ? shape.holes().empty() || shape.contains(x) : shape.contains(x)) points.push_back(x);
     }
   }
