@@ -59,9 +59,9 @@ class SceneExample(case_runs.CaseRunTest):
         first, last = self.water(snapshots[0]), self.water(snapshots[-1])
         # The column has fallen and spread: its front is past its foot.
         self.assertGreater(last[:, 0].max(), first[:, 0].max() + 0.05)
-        breakwater = [tuple(map(float, line.split(",")))
-                      for line in open(os.path.join(REPO, "docs", "examples", "breakwater.csv"))
-                      if line.strip() and not line.startswith("#")]
+        with open(os.path.join(REPO, "docs", "examples", "breakwater.csv")) as outline:
+            breakwater = [tuple(map(float, line.split(","))) for line in outline
+                          if line.strip() and not line.startswith("#")]
         beach = [(0.6, 0.0), (1.0, 0.0), (1.0, 0.2)]
         # A particle may come up to half a spacing into a wall's outline (its
         # centre stays off the wall particles' own), not deeper.
