@@ -5,7 +5,8 @@ column falls round the cylinder and runs along the floor, and none of it
 gets into a wall or is lost.
 
 Run by ctest (coupled_cases); by hand:
-COSPH_BIN=build/bin /usr/bin/python3 -m unittest discover -s tests/case_runs -p test_scene_example.py
+  COSPH_BIN=build/bin /usr/bin/python3 -m unittest discover -s tests/case_runs \
+      -p test_scene_example.py
 """
 import glob
 import os
