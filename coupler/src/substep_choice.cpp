@@ -7,6 +7,7 @@
 
 #include "fluid_parameters.hpp"
 #include "solid_parameters.hpp"
+#include "sphcore/region_reader.hpp"
 
 namespace cosph::coupler {
 
@@ -45,9 +46,15 @@ SubstepChoice choose_substeps(const AddedMassInputs& in) {
 }
 
 double solid_thickness(const sph::CaseFile& case_file) {
+  const auto& solid = case_file.config.solid();
   double thinnest = 0.0;
-  for (const auto& box : case_file.config.solid().body()) {
-    const double side = std::min(box.max().x() - box.min().x(), box.max().y() - box.min().y());
+  for (const sph::Shape& body : sph::read_regions(solid.body(), case_file, "solid.body")) {
+    // Other outlines than a box: found on a lattice of a quarter of the
+    // solid's spacing (of a twentieth of the body's least side without one).
+    const sph::Bounds b = body.bounds();
+    const double least_side = std::min(b.max.x() - b.min.x(), b.max.y() - b.min.y());
+    const double side =
+        sph::thickness(body, solid.spacing() > 0.0 ? 0.25 * solid.spacing() : 0.05 * least_side);
     thinnest = thinnest == 0.0 ? side : std::min(thinnest, side);
   }
   return thinnest;

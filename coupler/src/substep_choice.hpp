@@ -61,8 +61,10 @@ SubstepChoice choose_substeps(const AddedMassInputs& in);
 // Throws sph::ConfigError for a negative value.
 SubstepChoice read_substep_choice(const sph::CaseFile& case_file);
 
-// The thinnest extent of the case's solid.body boxes, in m (0 without any):
-// the plate's thickness e, the lightest mass per unit of interface.
+// The thinnest of the case's solid.body regions, in m (0 without any): the
+// plate's thickness e, the lightest mass per unit of interface. A region's
+// thickness is the diameter of the largest circle inside it (sph::thickness),
+// a box's its least side.
 double solid_thickness(const sph::CaseFile& case_file);
 
 }  // namespace cosph::coupler

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sphcore/region_reader.hpp"
+
 namespace cosph::fluid {
 
 using sph::format_number;
@@ -42,13 +44,14 @@ FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
                                                        : Dissipation::delta_sph;
 
   require(fluid.water_size() > 0, case_file, "fluid.water", "no water region given");
+  p.water = sph::read_regions(fluid.water(), case_file, "fluid.water");
   double tallest = 0.0;
-  for (int k = 0; k < fluid.water_size(); ++k) {
-    const auto& box = fluid.water(k);
-    const std::string field = "fluid.water[" + std::to_string(k) + "]";
-    require(box.max().x() - box.min().x() >= p.dx && box.max().y() - box.min().y() >= p.dx,
-            case_file, field, "must be at least one spacing wide and high (max > min)");
-    tallest = std::max(tallest, box.max().y() - box.min().y());
+  for (std::size_t k = 0; k < p.water.size(); ++k) {
+    const sph::Bounds b = p.water[k].bounds();
+    require(b.max.x() - b.min.x() >= p.dx && b.max.y() - b.min.y() >= p.dx, case_file,
+            "fluid.water[" + std::to_string(k) + "]",
+            "must be at least one spacing wide and high (max > min)");
+    tallest = std::max(tallest, b.max.y() - b.min.y());
   }
   require(fluid.sound_speed() >= 0.0, case_file, "fluid.sound_speed", "must not be negative");
   const double g = p.run.gravity.norm();
@@ -56,11 +59,15 @@ FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
           "must be given when there is no gravity (the default is 10 sqrt(2 g H))");
   p.c0 = fluid.sound_speed() > 0.0 ? fluid.sound_speed() : 10.0 * std::sqrt(2.0 * g * tallest);
 
-  for (int k = 0; k < fluid.walls_size(); ++k) {
-    const auto& box = fluid.walls(k);
-    const std::string field = "fluid.walls[" + std::to_string(k) + "]";
-    const double thickness = std::min(box.max().x() - box.min().x(), box.max().y() - box.min().y());
-    require(thickness >= 2.0 * p.h - 1e-9, case_file, field,
+  p.walls = sph::read_regions(fluid.walls(), case_file, "fluid.walls");
+  for (std::size_t k = 0; k < p.walls.size(); ++k) {
+    // The diameter of the largest circle inside the wall: exact for a box,
+    // found on a lattice of dx/4 otherwise, and allowed that lattice's error.
+    const sph::Shape& wall = p.walls[k];
+    const bool box = wall.kind() == sph::Shape::Kind::box && wall.holes().empty();
+    const double thickness = sph::thickness(wall, 0.25 * p.dx);
+    const double allowance = box ? 1e-9 : 0.5 * p.dx;
+    require(thickness >= 2.0 * p.h - allowance, case_file, "fluid.walls[" + std::to_string(k) + "]",
             "is " + format_number(thickness) + " m thick, less than the kernel support 2h = " +
                 format_number(2.0 * p.h) + " m: water would see through it");
   }

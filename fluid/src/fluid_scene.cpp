@@ -5,34 +5,14 @@
 
 #include "equation_of_state.hpp"
 #include "sphcore/kernel.hpp"
-#include "sphcore/lattice.hpp"
 
 namespace cosph::fluid {
 namespace {
 
-using Box = cosph::config::Box;
-
-bool overlaps(const Box& a, const Box& b, double tolerance) {
-  return a.min().x() < b.max().x() - tolerance && b.min().x() < a.max().x() - tolerance &&
-         a.min().y() < b.max().y() - tolerance && b.min().y() < a.max().y() - tolerance;
-}
-
-// Is there a box beyond point p in direction (dx, dy), one of (+-1, 0), (0, -1)?
-bool closed_towards(const std::vector<Box>& closers, const Vec2& p, int dx, int dy, double eps) {
-  for (const Box& b : closers) {
-    const bool spans_x = b.min().x() - eps <= p.x() && p.x() <= b.max().x() + eps;
-    const bool spans_y = b.min().y() - eps <= p.y() && p.y() <= b.max().y() + eps;
-    if (dy < 0 && spans_x && b.max().y() <= p.y() + eps) return true;
-    if (dx < 0 && spans_y && b.max().x() <= p.x() + eps) return true;
-    if (dx > 0 && spans_y && b.min().x() >= p.x() - eps) return true;
-  }
-  return false;
-}
-
 // A wall particle deep inside the walls, with nothing but wall within the
 // kernel support around it, can never meet water: it is left out, so that thick
 // walls cost nothing at fine resolutions.
-bool within_reach_of_water(const google::protobuf::RepeatedPtrField<Box>& walls, const Vec2& x,
+bool within_reach_of_water(const std::vector<sph::Shape>& walls, const Vec2& x,
                            const FluidParameters& p) {
   const double reach = sph::kernel::kSupport * p.h, step = 0.5 * p.dx;
   const int samples = static_cast<int>(std::ceil(reach / step));
@@ -42,7 +22,7 @@ bool within_reach_of_water(const google::protobuf::RepeatedPtrField<Box>& walls,
       if (offset.norm() > reach) continue;
       const Vec2 probe = x + offset;
       if (std::none_of(walls.begin(), walls.end(),
-                       [&](const Box& wall) { return sph::contains(wall, probe); }))
+                       [&](const sph::Shape& wall) { return wall.contains(probe); }))
         return true;
     }
   return false;
@@ -50,47 +30,8 @@ bool within_reach_of_water(const google::protobuf::RepeatedPtrField<Box>& walls,
 
 }  // namespace
 
-void check_walls_close(const sph::CaseFile& case_file, const FluidParameters& parameters) {
-  const auto& fluid = case_file.config.fluid();
-  std::vector<Box> solid_bodies;
-  if (case_file.config.has_solid())
-    solid_bodies.assign(case_file.config.solid().body().begin(),
-                        case_file.config.solid().body().end());
-  std::vector<Box> closers(fluid.walls().begin(), fluid.walls().end());
-  closers.insert(closers.end(), solid_bodies.begin(), solid_bodies.end());
-  const double dx = parameters.dx, eps = 1e-3 * dx;
-
-  for (int k = 0; k < fluid.water_size(); ++k) {
-    const Box& water = fluid.water(k);
-    const std::string name = "fluid.water[" + std::to_string(k) + "]";
-    for (int w = 0; w < fluid.walls_size(); ++w)
-      sph::require(!overlaps(fluid.walls(w), water, eps), case_file,
-                   "fluid.walls[" + std::to_string(w) + "]", "overlaps " + name);
-    // Two phases on one site: the coupler's pair forces would tear them apart
-    // at the first step, and the water would stay inside the solid's shape.
-    for (std::size_t b = 0; b < solid_bodies.size(); ++b)
-      sph::require(!overlaps(solid_bodies[b], water, eps), case_file,
-                   "solid.body[" + std::to_string(b) + "]", "overlaps " + name);
-    auto fail = [&](const Vec2& p, const char* side) {
-      sph::require(false, case_file, "fluid.walls",
-                   "do not close " + name + ": water at (" + sph::format_number(p.x()) + ", " +
-                       sph::format_number(p.y()) + ") m can flow out " + side);
-    };
-    for (double x = water.min().x() + 0.5 * dx; x < water.max().x(); x += dx)
-      if (!closed_towards(closers, Vec2(x, water.min().y()), 0, -1, eps))
-        fail(Vec2(x, water.min().y()), "through the bottom");
-    for (double y = water.min().y() + 0.5 * dx; y < water.max().y(); y += dx) {
-      if (!closed_towards(closers, Vec2(water.min().x(), y), -1, 0, eps))
-        fail(Vec2(water.min().x(), y), "to the left");
-      if (!closed_towards(closers, Vec2(water.max().x(), y), 1, 0, eps))
-        fail(Vec2(water.max().x(), y), "to the right");
-    }
-  }
-}
-
 FluidParticles build_fluid_scene(const sph::CaseFile& case_file, const FluidParameters& p) {
   check_walls_close(case_file, p);
-  const auto& fluid = case_file.config.fluid();
   const TaitEquationOfState eos(p.rho0, p.c0);
   const double area = p.dx * p.dx;
   const double g = p.run.gravity.norm();
@@ -98,17 +39,17 @@ FluidParticles build_fluid_scene(const sph::CaseFile& case_file, const FluidPara
   int next_id = 0;
   // Water starts in hydrostatic balance, so that a still tank stays still and a
   // dam break starts without a pressure wave from a uniform density.
-  for (const auto& box : fluid.water()) {
-    for (const Vec2& x : sph::fill_box(box, p.dx)) {
-      const double depth = box.max().y() - x.y();
+  for (const sph::Shape& water : p.water) {
+    for (const Vec2& x : sph::fill(water, p.dx)) {
+      const double depth = water.top_at(x.x()) - x.y();
       const double rho = eos.density(p.rho0 * g * depth);
       particles.add(next_id++, Kind::water, x, rho, rho * area);
     }
   }
-  for (const auto& box : fluid.walls()) {
+  for (const sph::Shape& wall : p.walls) {
     particles.first_wall_id.push_back(next_id);
-    for (const Vec2& x : sph::fill_box(box, p.dx))
-      if (within_reach_of_water(fluid.walls(), x, p))
+    for (const Vec2& x : sph::fill(wall, p.dx))
+      if (within_reach_of_water(p.walls, x, p))
         particles.add(next_id++, Kind::wall, x, p.rho0, p.rho0 * area);
   }
   particles.resize_derived();

@@ -5,14 +5,11 @@
 #include "fluid_parameters.hpp"
 #include "fluid_particles.hpp"
 #include "sphcore/case_file.hpp"
+#include "walls_close.hpp"
 
 namespace cosph::fluid {
 
-// Throws sph::ConfigError if the water could flow out of the walls (and the
-// solid, if the case has one) to the left, the right or the bottom, or if a wall
-// or a solid body overlaps the water.
-void check_walls_close(const sph::CaseFile& case_file, const FluidParameters& parameters);
-
+// Refuses the case first if the walls do not hold the water (walls_close.hpp).
 FluidParticles build_fluid_scene(const sph::CaseFile& case_file, const FluidParameters& parameters);
 
 }  // namespace cosph::fluid

@@ -31,7 +31,7 @@ template <class Particles>
 void kick_and_drift(Particles& P, long i, double dt, const SolidParameters& parameters) {
   P.v[i] += (0.5 * dt) * (P.a[i] + P.external_a[i]);
   P.x[i] += dt * P.v[i];
-  for (const sph::Region& wall : parameters.walls) push_out_of_wall(wall, P.x[i], P.v[i]);
+  for (const SolidWall& wall : parameters.walls) push_out_of_wall(wall, P.x[i], P.v[i]);
 }
 
 // The closing kick, with the accelerations of the new state.

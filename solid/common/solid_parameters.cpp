@@ -5,6 +5,7 @@
 
 #include "hooke_pressure.hpp"
 #include "sphcore/region.hpp"
+#include "sphcore/region_reader.hpp"
 
 namespace cosph::solid {
 
@@ -22,14 +23,24 @@ void check_elastic(const sph::CaseFile& case_file, const std::string& field, dou
               format_number(nu));
 }
 
-sph::Region region_of(const cosph::config::Box& box) {
-  return {sph::Vec2(box.min().x(), box.min().y()), sph::Vec2(box.max().x(), box.max().y())};
+// The region's bounds at least dx wide and high, so that it holds a particle.
+sph::Shape checked_region(const cosph::config::Region& region, const sph::CaseFile& case_file,
+                          const std::string& field, double dx) {
+  sph::Shape shape = sph::read_region(region, case_file, field);
+  const sph::Bounds b = shape.bounds();
+  require(b.max.x() - b.min.x() >= dx && b.max.y() - b.min.y() >= dx, case_file, field,
+          "must be at least one spacing wide and high (max > min)");
+  return shape;
 }
 
-void check_box(const sph::CaseFile& case_file, const std::string& field,
-               const cosph::config::Box& box, double dx) {
-  require(box.max().x() - box.min().x() >= dx && box.max().y() - box.min().y() >= dx, case_file,
-          field, "must be at least one spacing wide and high (max > min)");
+std::vector<sph::Shape> checked_regions(
+    const google::protobuf::RepeatedPtrField<cosph::config::Region>& regions,
+    const sph::CaseFile& case_file, const std::string& field, double dx) {
+  std::vector<sph::Shape> shapes;
+  for (int k = 0; k < regions.size(); ++k)
+    shapes.push_back(
+        checked_region(regions[k], case_file, field + "[" + std::to_string(k) + "]", dx));
+  return shapes;
 }
 
 ArtificialStressParameters read_artificial_stress(const sph::CaseFile& case_file) {
@@ -53,12 +64,12 @@ FractureParameters read_fracture(const sph::CaseFile& case_file, double dx, doub
     const auto& weak = block.weakened(k);
     const std::string field = "solid.fracture.weakened[" + std::to_string(k) + "]";
     check_elastic(case_file, field, weak.youngs_modulus(), nu);
-    check_box(case_file, field + ".region", weak.region(), dx);
+    sph::Shape region = checked_region(weak.region(), case_file, field + ".region", dx);
     require(
         weak.yield_stress() >= 0.0, case_file, field + ".yield_stress",
         "must not be negative (0: the body's), got " + format_number(weak.yield_stress()) + " Pa");
     p.weakened.push_back(
-        {weak.region(), weak.youngs_modulus(),
+        {std::move(region), weak.youngs_modulus(),
          weak.yield_stress() > 0.0 ? std::optional<double>(weak.yield_stress()) : std::nullopt});
   }
   return p;
@@ -112,10 +123,8 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
   // A shell's body and clamp boxes may be thinner than a spacing: its
   // thickness is a property, not particles (solid/shell/shell_line.hpp).
   const double least_side = p.model == SolidModel::shell ? 0.0 : p.dx;
-  for (int k = 0; k < solid.body_size(); ++k)
-    check_box(case_file, "solid.body[" + std::to_string(k) + "]", solid.body(k), least_side);
-  for (int k = 0; k < solid.clamp_size(); ++k)
-    check_box(case_file, "solid.clamp[" + std::to_string(k) + "]", solid.clamp(k), least_side);
+  p.bodies = checked_regions(solid.body(), case_file, "solid.body", least_side);
+  p.clamps = checked_regions(solid.clamp(), case_file, "solid.clamp", least_side);
   require(!solid.has_end_load() || p.model == SolidModel::shell, case_file, "solid.end_load",
           "applies to solid.model 'shell' only");
 
@@ -146,22 +155,21 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
       solid.has_hourglass_control() ? solid.hourglass_control() : kDefaultHourglassControl;
   if (solid.has_broken_part_below_y()) {
     const double top = solid.broken_part_below_y();
-    const bool below_some_body = std::any_of(solid.body().begin(), solid.body().end(),
-                                             [&](const auto& box) { return box.min().y() < top; });
+    const bool below_some_body =
+        std::any_of(p.bodies.begin(), p.bodies.end(),
+                    [&](const sph::Shape& body) { return body.bounds().min.y() < top; });
     require(
         below_some_body, case_file, "solid.broken_part_below_y",
         "no solid lies below it (" + format_number(top) + " m): the broken part would be empty");
     p.broken_part_below_y = top;
   }
-  for (int k = 0; k < solid.walls_size(); ++k) {
-    const auto& wall = solid.walls(k);
-    check_box(case_file, "solid.walls[" + std::to_string(k) + "]", wall, p.dx);
-    p.walls.push_back(region_of(wall).grown(0.5 * p.dx));
-  }
+  for (const sph::Shape& wall : checked_regions(solid.walls(), case_file, "solid.walls", p.dx))
+    p.walls.emplace_back(wall, 0.5 * p.dx);
   if (solid.walls().empty() && case_file.config.has_fluid()) {
-    const auto& water_walls = case_file.config.fluid().walls();
-    for (int k = 0; k < water_walls.size(); ++k)
-      p.unmet_walls.push_back({k, region_of(water_walls[k]).grown(-0.5 * p.dx)});
+    const auto water_walls =
+        sph::read_regions(case_file.config.fluid().walls(), case_file, "fluid.walls");
+    for (std::size_t k = 0; k < water_walls.size(); ++k)
+      p.unmet_walls.emplace_back(static_cast<int>(k), water_walls[k], 0.5 * p.dx);
   }
   if (solid.has_tip_gauge()) p.tip_gauge = sph::Vec2(solid.tip_gauge().x(), solid.tip_gauge().y());
   return p;

@@ -8,8 +8,10 @@
 #include "sphcore/case_file.hpp"
 #include "sphcore/region.hpp"
 #include "sphcore/run_parameters.hpp"
+#include "sphcore/shape.hpp"
 #include "sphcore/types.hpp"
 #include "unmet_walls.hpp"
+#include "wall_contact.hpp"
 
 namespace cosph::solid {
 
@@ -20,7 +22,7 @@ struct ArtificialStressParameters {
 };
 
 struct WeakRegion {
-  cosph::config::Box region;
+  sph::Shape region;
   double E;
   std::optional<double> yield_stress;  // the body's when absent
 };
@@ -78,7 +80,9 @@ struct SolidParameters {
   std::optional<BendingModeParameters> bending_mode;
   std::optional<sph::Vec2> tip_gauge;
   std::optional<double> broken_part_below_y;
-  std::vector<sph::Region> walls;  // rigid walls grown by dx/2 (wall_contact.hpp)
+  std::vector<sph::Shape> bodies;  // solid.body
+  std::vector<sph::Shape> clamps;  // solid.clamp
+  std::vector<SolidWall> walls;    // solid.walls grown by dx/2 (wall_contact.hpp)
   double hourglass_alpha;          // total_lagrangian: hourglass control (Ganzenmueller 2015)
   // The water's walls when the case lists no solid.walls (unmet_walls.hpp).
   std::vector<UnmetWall> unmet_walls;

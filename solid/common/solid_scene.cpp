@@ -6,7 +6,7 @@
 #include "bending_mode.hpp"
 #include "hooke_pressure.hpp"
 #include "sphcore/case_file.hpp"
-#include "sphcore/lattice.hpp"
+#include "sphcore/shape.hpp"
 
 namespace cosph::solid {
 namespace {
@@ -15,7 +15,7 @@ namespace {
 double youngs_modulus_at(const Vec2& x, const SolidParameters& p) {
   double E = p.E;
   for (const WeakRegion& weak : p.fracture.weakened)
-    if (sph::contains(weak.region, x)) E = weak.E;
+    if (weak.region.contains(x)) E = weak.E;
   return E;
 }
 
@@ -24,7 +24,7 @@ double youngs_modulus_at(const Vec2& x, const SolidParameters& p) {
 double yield_stress_at(const Vec2& x, const SolidParameters& p) {
   double sigma_y = p.fracture.yield_stress;
   for (const WeakRegion& weak : p.fracture.weakened)
-    if (weak.yield_stress && sph::contains(weak.region, x)) sigma_y = *weak.yield_stress;
+    if (weak.yield_stress && weak.region.contains(x)) sigma_y = *weak.yield_stress;
   return sigma_y;
 }
 
@@ -39,10 +39,10 @@ double initial_vertical_speed(const Vec2& x, const BendingModeParameters& mode) 
 // the wall's face at the first step, on top of its neighbours: the case is
 // wrong, and the user should hear so before the run, not see a squashed body.
 // Clamped particles may sit in a wall (a plate held in the floor).
-void require_free_particles_outside_walls(const sph::CaseFile& case_file, int body, const Vec2& x,
-                                          const SolidParameters& p) {
+void require_free_particles_outside_walls(const sph::CaseFile& case_file, std::size_t body,
+                                          const Vec2& x, const SolidParameters& p) {
   for (std::size_t k = 0; k < p.walls.size(); ++k) {
-    const bool inside = p.walls[k].grown(-1e-6 * p.dx).contains(x);
+    const bool inside = p.walls[k].holds(x, 1e-6 * p.dx);
     sph::require(!inside, case_file, "solid.walls[" + std::to_string(k) + "]",
                  "a free particle of solid.body[" + std::to_string(body) + "] at (" +
                      sph::format_number(x.x()) + ", " + sph::format_number(x.y()) +
@@ -54,19 +54,18 @@ void require_free_particles_outside_walls(const sph::CaseFile& case_file, int bo
 }  // namespace
 
 SolidScene build_solid_scene(const sph::CaseFile& case_file, const SolidParameters& p) {
-  const auto& solid = case_file.config.solid();
   const double mass = p.rho0 * p.dx * p.dx;
   SolidScene particles;
   int next_id = 0;
-  for (int body = 0; body < solid.body_size(); ++body) {
-    for (const Vec2& x : sph::fill_box(solid.body(body), p.dx)) {
+  for (std::size_t body = 0; body < p.bodies.size(); ++body) {
+    for (const Vec2& x : sph::fill(p.bodies[body], p.dx)) {
       // Overlapping body boxes must not put two particles on one site.
       const bool taken = std::any_of(particles.x.begin(), particles.x.end(), [&](const Vec2& y) {
         return (y - x).squaredNorm() < 0.01 * p.dx * p.dx;
       });
       if (taken) continue;
-      const bool clamped = std::any_of(solid.clamp().begin(), solid.clamp().end(),
-                                       [&](const auto& clamp) { return sph::contains(clamp, x); });
+      const bool clamped = std::any_of(p.clamps.begin(), p.clamps.end(),
+                                       [&](const sph::Shape& clamp) { return clamp.contains(x); });
       if (!clamped) require_free_particles_outside_walls(case_file, body, x, p);
       const double E = youngs_modulus_at(x, p);
       const double K = bulk_modulus(E, p.nu), G = shear_modulus(E, p.nu);

@@ -7,7 +7,7 @@
 // through it and go on as if nothing were there. So when solid.walls is empty,
 // the solid watches the water's walls (fluid.walls) and stops the run, saying
 // what to add, once a free particle lies wholly inside one of them: its
-// centre more than half a spacing inside the box.
+// centre at least half a spacing inside the wall.
 //
 // A wall some free particle starts inside is left out: the case put the body
 // there, and a check that failed at once would only get in the way.
@@ -23,13 +23,28 @@
 #include "sphcore/parallel.hpp"
 #include "sphcore/region.hpp"
 #include "sphcore/runaway_error.hpp"
+#include "sphcore/shape.hpp"
 #include "sphcore/types.hpp"
 
 namespace cosph::solid {
 
 struct UnmetWall {
-  int index;           // in fluid.walls
-  sph::Region inside;  // the wall's box shrunk by half a solid spacing
+  int index;  // in fluid.walls
+  // The wall's bounds shrunk by half a solid spacing: for a box, the points
+  // at least that deep inside it; for any other region, a screen around them.
+  sph::Region inside;
+  std::optional<sph::Shape> shape;  // absent for a box without holes
+  double depth = 0.0;               // half a solid spacing
+
+  UnmetWall(int index_in_walls, const sph::Shape& wall, double half_spacing)
+      : index(index_in_walls), depth(half_spacing) {
+    const sph::Bounds b = wall.bounds();
+    inside = sph::Region{b.min, b.max}.grown(-half_spacing);
+    if (wall.kind() != sph::Shape::Kind::box || !wall.holes().empty()) shape = wall;
+  }
+  bool contains(const sph::Vec2& x) const {
+    return inside.contains(x) && (!shape || shape->depth(x) >= depth);
+  }
 };
 
 struct WallCrossing {
@@ -43,7 +58,7 @@ std::optional<WallCrossing> find_wall_crossing(const Positions& x, const Clamped
                                                const std::vector<UnmetWall>& walls) {
   for (const UnmetWall& wall : walls)
     for (std::size_t i = 0; i < x.size(); ++i)
-      if (!clamped[i] && wall.inside.contains(x[i])) return WallCrossing{i, wall.index};
+      if (!clamped[i] && wall.contains(x[i])) return WallCrossing{i, wall.index};
   return std::nullopt;
 }
 

@@ -7,7 +7,6 @@
 
 #include "bending_mode.hpp"
 #include "line_kernel.hpp"
-#include "sphcore/lattice.hpp"
 
 namespace cosph::solid::shell {
 
@@ -21,6 +20,9 @@ ShellLine read_shell_line(const sph::CaseFile& case_file, double dx) {
                "the shell model takes exactly one body box (the plate), got " +
                    std::to_string(solid.body_size()));
   const auto& box = solid.body(0);
+  sph::require(box.has_min() && box.has_max() && box.subtract().empty(), case_file, "solid.body[0]",
+               "the shell model takes a box (min and max) without subtract: it reads the box as a "
+               "straight plate");
   const double width = box.max().x() - box.min().x(), height = box.max().y() - box.min().y();
   const bool along_x = width >= height;
   const double length = along_x ? width : height, thickness = along_x ? height : width;
@@ -49,10 +51,9 @@ ShellLine read_shell_line(const sph::CaseFile& case_file, double dx) {
 
 namespace {
 
-bool in_a_clamp(const sph::CaseFile& case_file, const Vec2& x) {
-  const auto& clamps = case_file.config.solid().clamp();
-  return std::any_of(clamps.begin(), clamps.end(),
-                     [&](const auto& clamp) { return sph::contains(clamp, x); });
+bool in_a_clamp(const SolidParameters& parameters, const Vec2& x) {
+  return std::any_of(parameters.clamps.begin(), parameters.clamps.end(),
+                     [&](const sph::Shape& clamp) { return clamp.contains(x); });
 }
 
 }  // namespace
@@ -75,7 +76,7 @@ ShellParticles build_shell(const sph::CaseFile& case_file, const SolidParameters
     P.m.push_back(section.mass_per_length() * V);
     P.J.push_back(section.inertia_per_length() * V);
     P.c.push_back(section.sound_speed());
-    const bool clamped = in_a_clamp(case_file, X);
+    const bool clamped = in_a_clamp(parameters, X);
     P.clamped.push_back(clamped);
     P.x.push_back(X);
     Vec2 v = Vec2::Zero();

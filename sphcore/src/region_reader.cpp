@@ -109,4 +109,28 @@ Shape read_region(const cosph::config::Region& region, const CaseFile& case_file
   return shape;
 }
 
+std::vector<Shape> read_regions(
+    const google::protobuf::RepeatedPtrField<cosph::config::Region>& regions,
+    const CaseFile& case_file, const std::string& field) {
+  std::vector<Shape> shapes;
+  shapes.reserve(static_cast<std::size_t>(regions.size()));
+  for (int k = 0; k < regions.size(); ++k)
+    shapes.push_back(read_region(regions[k], case_file, field + "[" + std::to_string(k) + "]"));
+  return shapes;
+}
+
+void check_regions(const CaseFile& case_file) {
+  const auto& fluid = case_file.config.fluid();
+  read_regions(fluid.water(), case_file, "fluid.water");
+  read_regions(fluid.walls(), case_file, "fluid.walls");
+  const auto& solid = case_file.config.solid();
+  read_regions(solid.body(), case_file, "solid.body");
+  read_regions(solid.clamp(), case_file, "solid.clamp");
+  read_regions(solid.walls(), case_file, "solid.walls");
+  const auto& weakened = solid.fracture().weakened();
+  for (int k = 0; k < weakened.size(); ++k)
+    read_region(weakened[k].region(), case_file,
+                "solid.fracture.weakened[" + std::to_string(k) + "].region");
+}
+
 }  // namespace sph

@@ -109,11 +109,66 @@ bool Shape::outline_contains(const Vec2& p) const {
   return inside;
 }
 
+bool Shape::in_a_hole(const Vec2& p) const {
+  return std::any_of(holes_.begin(), holes_.end(), [&](const Shape& hole) {
+    return hole.contains(p) && hole.nearest_surface(p).distance > 0.0;
+  });
+}
+
 bool Shape::contains(const Vec2& p) const {
-  if (!outline_contains(p)) return false;
+  return outline_contains(p) && !in_a_hole(p);
+}
+
+std::vector<double> Shape::outline_crossings(const Vec2& a, const Vec2& b) const {
+  const Vec2 d = b - a;
+  std::vector<double> crossings;
+  if (kind_ == Kind::circle) {
+    // |a + t d - c|^2 = r^2
+    const Vec2 f = a - vertices_[0];
+    const double A = d.squaredNorm(), B = 2.0 * f.dot(d), C = f.squaredNorm() - radius_ * radius_;
+    const double discriminant = B * B - 4.0 * A * C;
+    if (A == 0.0 || discriminant < 0.0) return crossings;
+    for (const double sign : {-1.0, 1.0}) {
+      const double t = (-B + sign * std::sqrt(discriminant)) / (2.0 * A);
+      if (t >= 0.0 && t <= 1.0) crossings.push_back(t);
+    }
+    return crossings;
+  }
+  std::vector<Vec2> corners = vertices_;
+  if (kind_ == Kind::box) {
+    const Vec2 lo = vertices_[0], hi = vertices_[1];
+    corners = {lo, Vec2(hi.x(), lo.y()), hi, Vec2(lo.x(), hi.y())};
+  }
+  for (std::size_t i = 0, n = corners.size(); i < n; ++i) {
+    const Vec2& e0 = corners[i];
+    const Vec2& e1 = corners[(i + 1) % n];
+    if (!segments_meet(a, b, e0, e1)) continue;
+    const double across = cross(d, e1 - e0);
+    // Along the edge: its nearer end is where the segment first touches it.
+    const double t = across != 0.0 ? cross(e0 - a, e1 - e0) / across
+                     : d.squaredNorm() > 0.0
+                         ? std::min((e0 - a).dot(d), (e1 - a).dot(d)) / d.squaredNorm()
+                         : 0.0;
+    crossings.push_back(std::clamp(t, 0.0, 1.0));
+  }
+  return crossings;
+}
+
+bool Shape::meets(const Vec2& a, const Vec2& b) const {
+  const Bounds box = bounds();
+  if (std::max(a.x(), b.x()) < box.min.x() || std::min(a.x(), b.x()) > box.max.x() ||
+      std::max(a.y(), b.y()) < box.min.y() || std::min(a.y(), b.y()) > box.max.y())
+    return false;
+  if (contains(a) || contains(b)) return true;
+  // Neither end inside: the segment meets the region where it crosses the
+  // outline, or a hole's edge inside the outline, outside every hole.
+  const auto at = [&](double t) -> Vec2 { return a + t * (b - a); };
+  for (const double t : outline_crossings(a, b))
+    if (!in_a_hole(at(t))) return true;
   for (const Shape& hole : holes_)
-    if (hole.contains(p) && hole.nearest_surface(p).distance > 0.0) return false;
-  return true;
+    for (const double t : hole.outline_crossings(a, b))
+      if (outline_contains(at(t)) && !in_a_hole(at(t))) return true;
+  return false;
 }
 
 SurfacePoint Shape::nearest_on_outline(const Vec2& p) const {
@@ -243,6 +298,15 @@ std::optional<std::string> polygon_defect(const std::vector<Vec2>& v) {
   return std::nullopt;
 }
 
+double thickness(const Shape& shape, double spacing) {
+  const Bounds b = shape.bounds();
+  if (shape.kind() == Shape::Kind::box && shape.holes().empty())
+    return std::min(b.max.x() - b.min.x(), b.max.y() - b.min.y());
+  double deepest = 0.0;
+  for (const Vec2& x : fill(shape, spacing)) deepest = std::max(deepest, shape.depth(x));
+  return 2.0 * deepest;
+}
+
 std::vector<Vec2> fill(const Shape& shape, double spacing) {
   const Bounds b = shape.bounds();
   const bool box = shape.kind() == Shape::Kind::box;
@@ -257,10 +321,16 @@ std::vector<Vec2> fill(const Shape& shape, double spacing) {
   const long ny = count(b.max.y() - b.min.y());
   std::vector<Vec2> points;
   points.reserve(static_cast<std::size_t>(std::max(nx, 0L) * std::max(ny, 0L)));
+  // The coordinates rounded exactly as the box fill of every earlier case
+  // (built with FMA contraction) rounded them, so that those cases keep their
+  // results bit for bit: x = min_x + (i + 1/2) dx in one rounding, a fused
+  // multiply-add; y = min_y + (j + 1/2) dx in two, the product rounded on its
+  // own (volatile, so that the compiler cannot fuse it into the sum).
   for (long j = 0; j < ny; ++j) {
+    const volatile double row_offset = (static_cast<double>(j) + 0.5) * spacing;
+    const double y = b.min.y() + row_offset;
     for (long i = 0; i < nx; ++i) {
-      const Vec2 x(b.min.x() + (static_cast<double>(i) + 0.5) * spacing,
-                   b.min.y() + (static_cast<double>(j) + 0.5) * spacing);
+      const Vec2 x(std::fma(static_cast<double>(i) + 0.5, spacing, b.min.x()), y);
       if (box ? shape.holes().empty() || shape.contains(x) : shape.contains(x)) points.push_back(x);
     }
   }

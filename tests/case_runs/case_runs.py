@@ -35,15 +35,16 @@ def read_csv(path):
 
 
 class CaseRunTest(unittest.TestCase):
-    """Runs cases/CASE.pbtxt with SETTINGS once for the whole class, into a
-    temporary folder `out` (removed afterwards) with the launcher's output in
-    `log`; every test first checks that the run succeeded."""
+    """Runs cases/CASE.pbtxt (or the case file CASE) with SETTINGS once for
+    the whole class, into a temporary folder `out` (removed afterwards) with
+    the launcher's output in `log`; every test first checks that the run
+    succeeded."""
     CASE = None
     SETTINGS = []
 
     @classmethod
     def setUpClass(cls):
-        cls.out = tempfile.mkdtemp(prefix=f"cosph_{cls.CASE}_")
+        cls.out = tempfile.mkdtemp(prefix=f"cosph_{os.path.basename(cls.CASE)}_")
         result = run_case(cls.CASE, cls.out, cls.SETTINGS)
         cls.log = result.stdout
         cls.returncode = result.returncode

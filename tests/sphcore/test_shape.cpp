@@ -7,30 +7,42 @@
 #include <cmath>
 #include <numbers>
 
-#include "case.pb.h"
-#include "sphcore/lattice.hpp"
-
 namespace {
 
 using sph::Shape;
 using sph::Vec2;
 
-cosph::config::Box proto_box(double x0, double y0, double x1, double y1) {
-  cosph::config::Box box;
-  box.mutable_min()->set_x(x0);
-  box.mutable_min()->set_y(y0);
-  box.mutable_max()->set_x(x1);
-  box.mutable_max()->set_y(y1);
-  return box;
+// The box fill every case used before regions had other shapes, as its
+// build rounded it (x in one fused multiply-add, y's product rounded on its
+// own): the reference a box's fill must equal bit for bit.
+std::vector<Vec2> box_lattice(const Vec2& min, const Vec2& max, double spacing) {
+  const long nx = std::lround((max.x() - min.x()) / spacing);
+  const long ny = std::lround((max.y() - min.y()) / spacing);
+  std::vector<Vec2> points;
+  for (long j = 0; j < ny; ++j)
+    for (long i = 0; i < nx; ++i) {
+      const volatile double row_offset = (static_cast<double>(j) + 0.5) * spacing;
+      points.emplace_back(std::fma(static_cast<double>(i) + 0.5, spacing, min.x()),
+                          min.y() + row_offset);
+    }
+  return points;
 }
 
 // A box fills exactly as the boxes of every case always have, bit for bit,
 // also where its width is a whole number of spacings only up to round-off.
+// The oscillating plate's box is one whose lattice rounds differently when
+// its y is fused too.
 TEST(Shape, ABoxFillsExactlyAsBefore) {
-  const double dx = 0.008;
-  for (const auto& [x1, y1] : {std::pair{0.144, 0.288}, {0.1439999, 0.2880001}, {0.6, 0.024}}) {
-    const auto expected = sph::fill_box(proto_box(-0.024, 0.0, x1, y1), dx);
-    const auto points = sph::fill(Shape::box(Vec2(-0.024, 0.0), Vec2(x1, y1)), dx);
+  struct Box {
+    Vec2 min, max;
+    double dx;
+  };
+  for (const Box& box :
+       {Box{{-0.024, 0.0}, {0.144, 0.288}, 0.008},
+        Box{{-0.024, 0.0}, {0.1439999, 0.2880001}, 0.008}, Box{{-0.024, 0.0}, {0.6, 0.024}, 0.008},
+        Box{{-0.02, -0.01}, {0.2, 0.01}, 0.00125}}) {
+    const auto expected = box_lattice(box.min, box.max, box.dx);
+    const auto points = sph::fill(Shape::box(box.min, box.max), box.dx);
     ASSERT_EQ(points.size(), expected.size());
     for (std::size_t i = 0; i < points.size(); ++i) {
       EXPECT_EQ(points[i].x(), expected[i].x());
@@ -126,6 +138,46 @@ TEST(Shape, UnusablePolygonsAreNamed) {
   EXPECT_TRUE(sph::polygon_defect({{0, 0}, {1, 0}, {1, 0}, {0, 1}}));
   EXPECT_FALSE(sph::polygon_defect({{0, 0}, {0.4, 0}, {0.6, 0.1}, {0, 0.2}}));
   EXPECT_FALSE(sph::polygon_defect({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}));
+}
+
+}  // namespace
+
+namespace {
+
+// A segment meets a region where it has a point in it: an end inside, or a
+// crossing of the outline outside every hole, however thin the region.
+TEST(Shape, ASegmentMeetsTheRegionItTouches) {
+  const Shape sheet = Shape::box(Vec2(0.5, -1.0), Vec2(0.5001, 1.0));  // thinner than the step
+  EXPECT_TRUE(sheet.meets(Vec2(0.45, 0.0), Vec2(0.55, 0.0)));
+  EXPECT_FALSE(sheet.meets(Vec2(0.45, 1.5), Vec2(0.55, 1.5)));  // above it
+  EXPECT_TRUE(sheet.meets(Vec2(0.45, 1.0), Vec2(0.55, 1.0)));   // along its top edge
+  const Shape disc = Shape::circle(Vec2(0.0, 0.0), 1.0);
+  EXPECT_TRUE(disc.meets(Vec2(-2.0, 0.5), Vec2(2.0, 0.5)));
+  EXPECT_FALSE(disc.meets(Vec2(-2.0, 1.01), Vec2(2.0, 1.01)));
+  const Shape wedge = Shape::polygon({{0, 0}, {1, 0}, {1, 1}});
+  EXPECT_TRUE(wedge.meets(Vec2(0.2, 0.5), Vec2(0.9, 0.5)));   // crosses the slope
+  EXPECT_FALSE(wedge.meets(Vec2(0.1, 0.5), Vec2(0.4, 0.5)));  // stays above it
+  // A ring (a disc less a smaller one): a segment inside the hole meets
+  // nothing; one from the hole out crosses the ring.
+  Shape ring = Shape::circle(Vec2(0.0, 0.0), 1.0);
+  ring.subtract(Shape::circle(Vec2(0.0, 0.0), 0.8));
+  EXPECT_FALSE(ring.meets(Vec2(-0.5, 0.0), Vec2(0.5, 0.0)));
+  EXPECT_TRUE(ring.meets(Vec2(0.5, 0.0), Vec2(1.5, 0.0)));
+  // A tank (a box less its inside) with a drain cut through its floor: a
+  // step down through the drain meets nothing, one beside it the floor.
+  Shape tank = Shape::box(Vec2(-0.1, -0.1), Vec2(1.1, 1.0));
+  tank.subtract(Shape::box(Vec2(0.0, 0.0), Vec2(1.0, 2.0)));
+  tank.subtract(Shape::box(Vec2(0.4, -0.5), Vec2(0.6, 0.5)));
+  EXPECT_FALSE(tank.meets(Vec2(0.5, 0.05), Vec2(0.5, -0.05)));
+  EXPECT_TRUE(tank.meets(Vec2(0.3, 0.05), Vec2(0.3, -0.05)));
+}
+
+TEST(Shape, ThicknessIsTheLargestInscribedCircle) {
+  EXPECT_EQ(sph::thickness(Shape::box(Vec2(0, 0), Vec2(0.3, 0.024)), 1.0), 0.024);  // exact
+  EXPECT_NEAR(sph::thickness(Shape::circle(Vec2(1, 2), 0.05), 0.001), 0.1, 0.002);
+  // A right triangle with legs a, b: inradius (a + b - c) / 2.
+  const double a = 0.4, b = 0.2, c = std::hypot(a, b);
+  EXPECT_NEAR(sph::thickness(Shape::polygon({{0, 0}, {a, 0}, {a, b}}), 0.001), a + b - c, 0.002);
 }
 
 }  // namespace

@@ -19,6 +19,17 @@ namespace sph {
 Shape read_region(const cosph::config::Region& region, const CaseFile& case_file,
                   const std::string& field);
 
+// The shapes of a repeated region field, e.g. fluid.walls, each named
+// "field[k]" in an error.
+std::vector<Shape> read_regions(
+    const google::protobuf::RepeatedPtrField<cosph::config::Region>& regions,
+    const CaseFile& case_file, const std::string& field);
+
+// Reads every region of the case (fluid.water, fluid.walls, solid.body,
+// solid.clamp, solid.walls, solid.fracture.weakened[].region), so that a bad
+// outline stops `cosph-case plan` before any process starts.
+void check_regions(const CaseFile& case_file);
+
 // The vertices of an outline file: "x,y" per line, "#" comments and blank
 // lines skipped. Throws ConfigError naming the file and line.
 std::vector<Vec2> read_outline(const std::string& path);

@@ -52,5 +52,21 @@ TEST(UnmetWalls, AWallAFreeParticleStartsInsideIsLeftOut) {
                       solver.step(solver.step_limits().smallest()));
 }
 
+// A particle is wholly inside a wall when its centre lies half a spacing or
+// more inside it: for a box, inside the box shrunk by that much, as always;
+// for a circle, within its radius less that much.
+TEST(UnmetWalls, WhollyInsideAWallOfAnyShape) {
+  const double half = 0.005;
+  const UnmetWall disc(0, sph::Shape::circle(Vec2(0.0, 0.0), 0.1), half);
+  EXPECT_TRUE(disc.contains(Vec2(0.0, 0.0)));
+  EXPECT_TRUE(disc.contains(Vec2(0.0, 0.095)));
+  EXPECT_FALSE(disc.contains(Vec2(0.0, 0.097)));
+  EXPECT_FALSE(disc.contains(Vec2(0.09, 0.09)));  // inside the disc's bounds, outside the disc
+  const UnmetWall floor(1, sph::Shape::box(Vec2(-1.0, -0.1), Vec2(1.0, 0.0)), half);
+  const sph::Region shrunk = sph::Region{Vec2(-1.0, -0.1), Vec2(1.0, 0.0)}.grown(-half);
+  for (const Vec2& x : {Vec2(0.0, -0.005), Vec2(0.0, -0.004), Vec2(0.996, -0.05), Vec2(0, 0.1)})
+    EXPECT_EQ(floor.contains(x), shrunk.contains(x)) << x.transpose();
+}
+
 }  // namespace
 }  // namespace cosph::solid
