@@ -10,6 +10,7 @@ Run by ctest (coupled_cases); by hand:
 """
 import glob
 import os
+import subprocess
 import unittest
 
 import h5py
@@ -76,6 +77,16 @@ class SceneExample(case_runs.CaseRunTest):
             self.assertLess(depth_in_polygon(x, breakwater).max(), margin,
                             "water inside the breakwater")
             self.assertLess(depth_in_polygon(x, beach).max(), margin, "water inside the beach")
+
+    def test_the_output_folders_case_runs_again(self):
+        # The copy of the case names its outline file relative to itself: the
+        # launcher copies the outline beside it, so the plan accepts the copy.
+        self.assertTrue(os.path.isfile(os.path.join(self.out, "breakwater.csv")))
+        bin_dir = os.environ.get("COSPH_BIN", os.path.join(REPO, "build", "bin"))
+        plan = subprocess.run([os.path.join(bin_dir, "cosph-case"), "plan",
+                               os.path.join(self.out, "case.pbtxt")],
+                              capture_output=True, text=True, timeout=60)
+        self.assertEqual(plan.returncode, 0, plan.stderr)
 
     def test_no_water_is_lost(self):
         series = read_csv(os.path.join(self.out, "timeseries.csv"))
