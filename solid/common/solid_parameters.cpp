@@ -139,8 +139,9 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
   require(!solid.has_hourglass_control() || solid.hourglass_control() >= 0.0, case_file,
           "solid.hourglass_control",
           "must not be negative (0 turns it off), got " + format_number(solid.hourglass_control()));
-  p.hourglass_alpha =
-      solid.has_hourglass_control() ? solid.hourglass_control() : kDefaultHourglassControl;
+  p.hourglass_alpha = solid.has_hourglass_control()  ? solid.hourglass_control()
+                      : p.model == SolidModel::shell ? kDefaultShellHourglassControl
+                                                     : kDefaultHourglassControl;
   if (solid.has_broken_part_below_y()) {
     const double top = solid.broken_part_below_y();
     const bool below_some_body = std::any_of(solid.body().begin(), solid.body().end(),

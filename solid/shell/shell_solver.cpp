@@ -21,11 +21,6 @@ const SolidParameters& checked(const sph::CaseFile& case_file, const SolidParame
   return parameters;
 }
 
-double hourglass_alpha(const sph::CaseFile& case_file) {
-  const auto& solid = case_file.config.solid();
-  return solid.has_hourglass_control() ? solid.hourglass_control() : kDefaultShellHourglassControl;
-}
-
 ShellSection section_of(const ShellLine& line, const SolidParameters& parameters) {
   return ShellSection::of(line.thickness, parameters.rho0, parameters.E, parameters.nu);
 }
@@ -65,7 +60,7 @@ ShellSolver::ShellSolver(const sph::CaseFile& case_file, const SolidParameters& 
     : ParticleSolver(parameters,
                      build_shell(case_file, parameters, line, section_of(line, parameters))),
       line_(line),
-      forces_{section_of(line, parameters), line.phi0(), hourglass_alpha(case_file), line.ds},
+      forces_{section_of(line, parameters), line.phi0(), parameters.hourglass_alpha, line.ds},
       end_load_(read_end_load(case_file, particles_)) {
   if (parameters_.tip_gauge)
     tip_ids_ = tip_gauge_ids(particles_.id, particles_.X, *parameters_.tip_gauge, line_.ds);

@@ -37,12 +37,6 @@
 
 namespace cosph::solid::shell {
 
-// Default of solid.hourglass_control for the shell: the control's stiffness
-// of a neighbour pair is then the field's own (GA for the position, EI for
-// the rotation) over the pair's distance squared, kernel-weighted. Chosen by
-// that rule, not fitted; docs/results/shell.md gives the period with it off.
-inline constexpr double kDefaultShellHourglassControl = 1.0;
-
 // A dead load on the free end's face (solid.end_load).
 struct EndLoad {
   Vec2 force;        // N/m
