@@ -3,6 +3,7 @@ running a case through the launcher, error norms, writing result tables.
 
 Run the scripts with /usr/bin/python3 (Debian's numpy, matplotlib, h5py).
 """
+import glob
 import json
 import os
 import re
@@ -10,6 +11,7 @@ import subprocess
 import sys
 import time
 
+import h5py
 import numpy as np
 
 REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -54,6 +56,21 @@ def run_case(case, out_dir, settings=(), timeout=3600):
         sys.stderr.write(result.stdout)
         raise RuntimeError(f"{' '.join(command)} failed with exit code {result.returncode}")
     return elapsed
+
+
+def run_solver(command):
+    """Runs one solver alone (COMMAND: its program first, then its arguments),
+    saying so; returns (its subprocess result, the wall time in seconds). Exit
+    code 1 is a run that stopped (a blow-up, said on stderr); any other
+    failure ends the script."""
+    print("running:", " ".join(str(part) for part in command), flush=True)
+    start = time.monotonic()
+    result = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    wall = time.monotonic() - start
+    if result.returncode not in (0, 1):
+        sys.exit(f"{os.path.basename(str(command[0]))} failed unexpectedly "
+                 f"(exit {result.returncode}):\n{result.stderr}")
+    return result, wall
 
 
 def run_or_reuse(case, out_dir, settings, reuse):
@@ -204,3 +221,20 @@ def count_pieces(positions, link):
         for j in near:
             parent[root(j)] = root(i)
     return len({root(k) for k in range(len(x))})
+
+
+def snapshot_at(out, name, time):
+    """The snapshot of solver NAME in OUT nearest to TIME, an open h5py file."""
+    files = sorted(glob.glob(os.path.join(out, f"{name}_[0-9]*.h5")))
+    times = [h5py.File(f, "r").attrs["time"] for f in files]
+    return h5py.File(files[int(np.argmin(np.abs(np.array(times) - time)))], "r")
+
+
+def draw_water(ax, fluid, cmap, size, wall_size):
+    """A fluid snapshot on AX: the water coloured by its pressure (0 to 1.4
+    kPa), the walls grey; returns the water's scatter, for a colour bar."""
+    x, water = fluid["position"][:], fluid["kind"][:] == 0
+    drawn = ax.scatter(x[water, 0], x[water, 1], c=fluid["pressure"][:][water] / 1e3, s=size,
+                       cmap=cmap, vmin=0, vmax=1.4)
+    ax.scatter(x[~water, 0], x[~water, 1], c="0.6", s=wall_size)
+    return drawn

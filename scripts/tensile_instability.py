@@ -21,9 +21,7 @@ import argparse
 import glob
 import os
 import pathlib
-import subprocess
 import sys
-import time
 
 import h5py
 import numpy as np
@@ -58,12 +56,7 @@ def run(out, gradient, artificial_stress, args):
                "--set", f"run.end_time={args.end_time}",
                "--set", f"solid.spacing={args.spacing!r}",
                "--set", f"run.snapshot_interval={args.end_time / args.frames}"]
-    print("running:", " ".join(command), flush=True)
-    start = time.monotonic()
-    result = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    wall = time.monotonic() - start
-    if result.returncode not in (0, 1):
-        sys.exit(f"cosph-solid-jaumann failed unexpectedly (exit {result.returncode}):\n{result.stderr}")
+    result, wall = cr.run_solver(command)
     error = result.stderr.strip() if result.returncode == 1 else ""
     if error:
         print("  stopped:", error)

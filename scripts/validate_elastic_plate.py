@@ -15,10 +15,8 @@ usage: /usr/bin/python3 scripts/validate_elastic_plate.py [--reuse] [--only SUFF
 Also writes docs/results/elastic_plate_points.json for scripts/speed_accuracy.py.
 """
 import argparse
-import glob
 import os
 
-import h5py
 import matplotlib
 
 matplotlib.use("Agg")
@@ -65,22 +63,11 @@ PUBLISHED = [("Khayyer 2018 ISPH-SPH", "khayyer2018_isph_sph"),
              ("Ng 2020 SPH-VCPM", "ng2020_sph_vcpm")]
 
 
-def snapshot_at(out, name, time):
-    """The snapshot of solver `name` nearest to `time`."""
-    files = sorted(glob.glob(os.path.join(out, f"{name}_[0-9]*.h5")))
-    times = [h5py.File(f, "r").attrs["time"] for f in files]
-    return h5py.File(files[int(np.argmin(np.abs(np.array(times) - time)))], "r")
-
-
 def draw_snapshots(out, path):
     fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
     for ax, time in zip(axes, (0.04, 0.12)):
-        fluid, solid = snapshot_at(out, "fluid", time), snapshot_at(out, "solid", time)
-        x, kind = fluid["position"][:], fluid["kind"][:]
-        water = kind == 0
-        p = ax.scatter(x[water, 0], x[water, 1], c=fluid["pressure"][:][water] / 1e3, s=3,
-                       cmap="viridis", vmin=0, vmax=1.4)
-        ax.scatter(x[~water, 0], x[~water, 1], c="0.6", s=2)
+        fluid, solid = cr.snapshot_at(out, "fluid", time), cr.snapshot_at(out, "solid", time)
+        p = cr.draw_water(ax, fluid, "viridis", 3, 2)
         xs = solid["position"][:]
         vm = solid["von_mises"][:] / 1e3 if "von_mises" in solid else np.zeros(len(xs))
         s = ax.scatter(xs[:, 0], xs[:, 1], c=vm, s=3, cmap="inferno")

@@ -159,12 +159,7 @@ def run_large_amplitude(out_dir, solver, model, tip_speed=4.0, end_time=0.3, acr
                "--set", f"solid.initial_velocity.tip_speed={tip_speed}",
                "--set", "solid.artificial_stress.enabled=false",
                "--set", f"run.end_time={end_time}", "--set", "run.snapshot_interval=0.05"]
-    print("running:", " ".join(command), flush=True)
-    start = time.monotonic()
-    result = subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    wall = time.monotonic() - start
-    if result.returncode not in (0, 1):
-        sys.exit(f"{solver.name} failed unexpectedly (exit {result.returncode}):\n{result.stderr}")
+    result, wall = cr.run_solver(command)
     series = read_timeseries(out / "timeseries.csv")
     # Torn: the particles no longer hang together at 1.5 spacings
     # (scripts/tensile_instability.py's rule).

@@ -60,12 +60,6 @@ def snapshots(out, name):
     return [h5py.File(f, "r") for f in files]
 
 
-def snapshot_at(out, name, time):
-    files = snapshots(out, name)
-    times = np.array([f.attrs["time"] for f in files])
-    return files[int(np.argmin(np.abs(times - time)))]
-
-
 def initial_y(out):
     first = snapshots(out, "solid")[0]
     return dict(zip(first["id"][:], first["position"][:, 1]))
@@ -107,12 +101,8 @@ def free_time(out, h):
 def draw_snapshots(out, path):
     fig, axes = plt.subplots(2, 2, figsize=(12, 5.2), layout="constrained")
     for ax, time in zip(axes.flat, SNAPSHOT_TIMES):
-        fluid, solid = snapshot_at(out, "fluid", time), snapshot_at(out, "solid", time)
-        x, kind = fluid["position"][:], fluid["kind"][:]
-        water = kind == 0
-        p = ax.scatter(x[water, 0], x[water, 1], c=fluid["pressure"][:][water] / 1e3, s=2,
-                       cmap="Blues", vmin=0, vmax=1.4)
-        ax.scatter(x[~water, 0], x[~water, 1], c="0.6", s=1)
+        fluid, solid = cr.snapshot_at(out, "fluid", time), cr.snapshot_at(out, "solid", time)
+        p = cr.draw_water(ax, fluid, "Blues", 2, 1)
         xs, failed = solid["position"][:], solid["failed"][:] == 1
         s = ax.scatter(xs[~failed, 0], xs[~failed, 1], c=solid["von_mises"][:][~failed] / 1e3,
                        s=3, cmap="plasma", vmin=0, vmax=30)

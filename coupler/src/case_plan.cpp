@@ -32,8 +32,8 @@ const char* kUsage = "usage: cosph-case plan CASE [--set FIELD=VALUE ...]";
 // Where a bare solid.executable is looked up: the launcher's executable folder
 // (COSPH_BIN; unset, the folder of this program, which the launcher started
 // from there), then the case's folder, then PATH.
-cosph::coupling::ExecutableSearch executable_search() {
-  cosph::coupling::ExecutableSearch search;
+cosph::coupler::ExecutableSearch executable_search() {
+  cosph::coupler::ExecutableSearch search;
   const char* bin = std::getenv("COSPH_BIN");
   std::error_code error;
   if (bin != nullptr && *bin != '\0')
@@ -41,7 +41,7 @@ cosph::coupling::ExecutableSearch executable_search() {
   else
     search.bin_dir = std::filesystem::read_symlink("/proc/self/exe", error).parent_path().string();
   const char* path = std::getenv("PATH");
-  search.path_dirs = cosph::coupling::split_search_path(path != nullptr ? path : "");
+  search.path_dirs = cosph::coupler::split_search_path(path != nullptr ? path : "");
   return search;
 }
 
@@ -75,7 +75,7 @@ int plan(int argc, char** argv) {
   std::vector<std::string> programs;
   if (fluid && solid) programs = {"cosph-coupler", "cosph-fluid"};
   if (fluid && !solid) programs = {"cosph-fluid"};
-  if (solid) programs.push_back(cosph::coupling::solid_program(case_file, executable_search()));
+  if (solid) programs.push_back(cosph::coupler::solid_program(case_file, executable_search()));
   for (const std::string& program : programs) std::cout << program << "\n";
   if (separate_cores) std::cout << "separate-cores\n";
   return 0;

@@ -5,15 +5,11 @@
 #include <string>
 
 #include "participant/coupling_timeout.hpp"
+#include "sphcore/run_parameters.hpp"
 #include "substep_choice.hpp"
 
 namespace cosph::coupler {
 namespace {
-
-// A coefficient of the case if given, else `fallback`'s if given, else `otherwise`.
-double first_positive(double given, double fallback, double otherwise) {
-  return given > 0.0 ? given : fallback > 0.0 ? fallback : otherwise;
-}
 
 void require_finite_non_negative(double value, const sph::CaseFile& case_file,
                                  const std::string& field) {
@@ -21,6 +17,28 @@ void require_finite_non_negative(double value, const sph::CaseFile& case_file,
                "must be a finite number, got " + sph::format_number(value));
   sph::require(value >= 0.0, case_file, field,
                "must not be negative, got " + sph::format_number(value));
+}
+
+// The coefficients of the phase whose terms the interface model uses, which
+// coupling.artificial_viscosity(_quadratic) override when given.
+sph::ArtificialViscosityCoefficients phase_artificial_viscosity(const sph::CaseFile& case_file,
+                                                                InterfaceModel model) {
+  if (model == InterfaceModel::stress_sum) {
+    // Damped as solid pairs are (A ~ 1 for a solid, docs/physics.md,
+    // "Artificial viscosity"): c_ij there is mostly the solid's sound speed.
+    // Damped as water (the water's A), the interface let water at negative
+    // pressure clump into the bending plate; with the mean of the two
+    // phases' coefficients the elastic plate still blew up.
+    const auto& solid = case_file.config.solid();
+    return sph::read_artificial_viscosity(case_file, "solid", solid.artificial_viscosity(),
+                                          solid.artificial_viscosity_quadratic(),
+                                          sph::kSolidArtificialViscosity);
+  }
+  // Water against a wall: the water's coefficients (and its sound speed).
+  const auto& fluid = case_file.config.fluid();
+  return sph::read_artificial_viscosity(case_file, "fluid", fluid.artificial_viscosity(),
+                                        fluid.artificial_viscosity_quadratic(),
+                                        sph::kWaterArtificialViscosity);
 }
 
 CrossPhaseParameters read_cross_phase_parameters(const sph::CaseFile& case_file) {
@@ -36,23 +54,12 @@ CrossPhaseParameters read_cross_phase_parameters(const sph::CaseFile& case_file)
   CrossPhaseParameters par;
   par.model = name == "stress_sum" ? InterfaceModel::stress_sum : InterfaceModel::moving_wall;
   par.gravity = sph::read_run_parameters(case_file).gravity;
-  if (par.model == InterfaceModel::stress_sum) {
-    // Damped as solid pairs are (A ~ 1 for a solid, docs/physics.md,
-    // "Artificial viscosity"): c_ij there is mostly the solid's sound speed.
-    // Damped as water (A = 0.02), the interface let water at negative
-    // pressure clump into the bending plate; with the mean of the two
-    // phases' coefficients the elastic plate still blew up.
-    const auto& solid = case_file.config.solid();
-    par.A = first_positive(coupling.artificial_viscosity(), solid.artificial_viscosity(), 1.0);
-    par.B = first_positive(coupling.artificial_viscosity_quadratic(),
-                           solid.artificial_viscosity_quadratic(), 1.0);
-  } else {
-    // Water against a wall: the water's coefficients (and its sound speed).
-    const auto& fluid = case_file.config.fluid();
-    par.A = first_positive(coupling.artificial_viscosity(), fluid.artificial_viscosity(), 0.02);
-    par.B = first_positive(coupling.artificial_viscosity_quadratic(),
-                           fluid.artificial_viscosity_quadratic(), 0.0);
-  }
+  const sph::ArtificialViscosityCoefficients phase =
+      phase_artificial_viscosity(case_file, par.model);
+  par.A = coupling.artificial_viscosity() > 0.0 ? coupling.artificial_viscosity() : phase.A;
+  par.B = coupling.artificial_viscosity_quadratic() > 0.0
+              ? coupling.artificial_viscosity_quadratic()
+              : phase.B;
   return par;
 }
 

@@ -7,7 +7,7 @@
 
 #include "solid_parameters.hpp"
 
-namespace cosph::coupling {
+namespace cosph::coupler {
 
 namespace fs = std::filesystem;
 
@@ -87,4 +87,4 @@ std::string solid_program(const sph::CaseFile& case_file, const ExecutableSearch
                                              : by_name(case_file, name, search);
 }
 
-}  // namespace cosph::coupling
+}  // namespace cosph::coupler

@@ -9,7 +9,7 @@
 
 #include "sphcore/case_file.hpp"
 
-namespace cosph::coupling {
+namespace cosph::coupler {
 
 // Where a bare program name (no "/") is looked up, in this order.
 struct ExecutableSearch {
@@ -30,4 +30,4 @@ std::vector<std::string> split_search_path(const std::string& path);
 // when there is no such program or it is not executable.
 std::string solid_program(const sph::CaseFile& case_file, const ExecutableSearch& search);
 
-}  // namespace cosph::coupling
+}  // namespace cosph::coupler

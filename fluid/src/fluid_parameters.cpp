@@ -20,17 +20,14 @@ FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
       sph::read_resolution(case_file, "fluid", fluid.spacing(), fluid.h_factor());
   p.dx = resolution.dx;
   p.h = resolution.h;
-  require(fluid.density() > 0.0, case_file, "fluid.density",
-          "must be positive, got " + format_number(fluid.density()) + " kg/m^3");
-  p.rho0 = fluid.density();
+  p.rho0 = sph::read_density(case_file, "fluid", fluid.density());
   require(fluid.viscosity() >= 0.0, case_file, "fluid.viscosity", "must not be negative");
   p.mu = fluid.viscosity();
-  require(fluid.artificial_viscosity() >= 0.0, case_file, "fluid.artificial_viscosity",
-          "must not be negative");
-  require(fluid.artificial_viscosity_quadratic() >= 0.0, case_file,
-          "fluid.artificial_viscosity_quadratic", "must not be negative");
-  p.A = fluid.artificial_viscosity() > 0.0 ? fluid.artificial_viscosity() : 0.02;
-  p.B = fluid.artificial_viscosity_quadratic();
+  const sph::ArtificialViscosityCoefficients av = sph::read_artificial_viscosity(
+      case_file, "fluid", fluid.artificial_viscosity(), fluid.artificial_viscosity_quadratic(),
+      sph::kWaterArtificialViscosity);
+  p.A = av.A;
+  p.B = av.B;
   p.delta = fluid.density_diffusion() < 0.0   ? 0.0
             : fluid.density_diffusion() > 0.0 ? fluid.density_diffusion()
                                               : 0.1;

@@ -8,6 +8,7 @@
 
 #include "fluid_dynamics.hpp"
 #include "fluid_scene.hpp"
+#include "sphcore/first_runaway.hpp"
 #include "sphcore/gauge.hpp"
 #include "sphcore/kernel.hpp"
 #include "sphcore/parallel.hpp"
@@ -19,10 +20,9 @@
 namespace cosph::fluid {
 
 FluidSolver::FluidSolver(const sph::CaseFile& case_file, const FluidParameters& parameters)
-    : parameters_(parameters),
+    : ParticleSolver(parameters, build_fluid_scene(case_file, parameters)),
       eos_(parameters.rho0, parameters.c0),
-      particles_(build_fluid_scene(case_file, parameters)),
-      skin_(sph::kSkinOverH * parameters.h) {
+      verlet_(parameters.h, 2) {
   find_neighbours(true);
   compute_continuity_and_gradients(particles_, pairs_, parameters_);  // only for grad_rho
   update_pressure();
@@ -35,17 +35,15 @@ void FluidSolver::find_neighbours(bool sort) {
     // The grid, built for 2h + skin, also serves the wall pressure until the
     // next sort: a water particle within 2h of a (fixed) wall particle now was
     // within 2h + skin / 2 of it then.
-    const double reach = sph::kernel::kSupport * parameters_.h + skin_;
-    grid_.build(P.x, reach, 2);
-    P.permute_state(grid_.order());
-    x_at_sort_ = P.x;
-    candidates_.build(grid_, P.x, reach, [&P](long i) { return P.is_water(i); });
+    verlet_.sort(
+        P.x, [&P](const std::vector<int>& order) { P.permute_state(order); },
+        [&P](long i) { return P.is_water(i); });
     // Walls far from the water cost nothing until the next sort.
-    walls_in_reach_ = walls_in_reach(P, grid_, reach);
+    walls_in_reach_ = walls_in_reach(P, verlet_.grid(), verlet_.reach());
     rest_walls_out_of_reach(P, walls_in_reach_, eos_);
     ++sorts_;
   }
-  pairs_.build(candidates_, P.x, parameters_.h);
+  pairs_.build(verlet_.candidates(), P.x, parameters_.h);
 }
 
 void FluidSolver::update_pressure() {
@@ -56,7 +54,7 @@ void FluidSolver::update_pressure() {
 }
 
 void FluidSolver::compute_forces() {
-  compute_wall_pressure(particles_, grid_, walls_in_reach_, parameters_, eos_);
+  compute_wall_pressure(particles_, verlet_.grid(), walls_in_reach_, parameters_, eos_);
   compute_accelerations(particles_, pairs_, parameters_);
 }
 
@@ -84,10 +82,9 @@ void FluidSolver::advance_state(double dt) {
     if (!P.is_water(i)) return 0.0;  // the walls do not move
     P.v[i] += half * (P.a[i] + P.external_a[i]);
     P.x[i] += dt * P.v[i];
-    return (P.x[i] - x_at_sort_[i]).squaredNorm();
+    return verlet_.moved2(P.x[i], i);
   });
-  const double rebuild_at = sph::verlet_rebuild_distance(parameters_.h);
-  find_neighbours(spray_left_ || moved2 > rebuild_at * rebuild_at);
+  find_neighbours(spray_left_ || verlet_.stale(moved2));
   spray_left_ = false;
   compute_continuity_and_gradients(P, pairs_, parameters_);
   sph::parallel_for(P.size(), [&](long i) {
@@ -146,7 +143,7 @@ void FluidSolver::remove_thinned_spray() {
   spray_removed_ += leaving;
   wall_forces_before_removal_ = forces_on_walls(P, pairs_, parameters_);
   P.keep_only(kept);
-  sph::permute(kept, x_at_sort_);
+  verlet_.keep_only(kept);
   spray_left_ = true;  // the grid and the Verlet list still hold the old indices
 }
 
@@ -234,17 +231,12 @@ bool FluidSolver::may_have_run_away() const {
 void FluidSolver::check_state() const {
   if (!may_have_run_away()) return;
   const FluidParticles& P = particles_;
-  // The first particle in index order that went wrong, as a serial scan finds.
-  const long first = sph::parallel_find_first(
-      P.size(), [&](long i) { return runaway_reason(static_cast<std::size_t>(i)) != nullptr; });
-  if (first == static_cast<long>(P.size())) return;
-  const std::size_t i = static_cast<std::size_t>(first);
-  std::ostringstream message;
-  message << "water particle " << P.id[i] << " at (" << P.x[i].x() << ", " << P.x[i].y()
-          << ") m, t = " << time_ << " s, step " << steps_ << ": " << runaway_reason(i)
-          << " (speed " << P.v[i].norm() << " m/s, density " << P.rho[i]
-          << " kg/m^3); the run has blown up: try a smaller run.cfl";
-  throw sph::RunawayError(message.str());
+  sph::stop_at_first_runaway(
+      P, "water particle", time_, steps_, [this](std::size_t i) { return runaway_reason(i); },
+      [&P](std::ostringstream& message, std::size_t i) {
+        message << ", density " << P.rho[i]
+                << " kg/m^3); the run has blown up: try a smaller run.cfl";
+      });
 }
 
 sph::Snapshot FluidSolver::snapshot() const {

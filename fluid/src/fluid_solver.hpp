@@ -16,29 +16,23 @@
 #include "fluid_particles.hpp"
 #include "gauges.hpp"
 #include "sphcore/case_file.hpp"
-#include "sphcore/cell_grid.hpp"
 #include "sphcore/gauge.hpp"
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/neighbour_list.hpp"
+#include "sphcore/particle_solver.hpp"
 #include "sphcore/region.hpp"
 #include "sphcore/snapshot_writer.hpp"
+#include "sphcore/sorted_verlet_list.hpp"
 #include "sphcore/time_step.hpp"
 
 namespace cosph::fluid {
 
-class FluidSolver {
+class FluidSolver : public sph::ParticleSolver<FluidSolver, FluidParticles, FluidParameters> {
  public:
   FluidSolver(const sph::CaseFile& case_file, const FluidParameters& parameters);
 
   // The largest step the fluid allows now.
   sph::StepLimits step_limits() const;
-
-  // Advances by dt. Throws sph::RunawayError if the new state is not physical;
-  // the particles then hold that bad state.
-  void step(double dt) {
-    begin_step(dt);
-    end_step(dt);
-  }
 
   // A coupled step is split where the coupler's answer is needed:
   // begin_step kicks, drifts and evaluates the water's own forces at the new
@@ -61,20 +55,12 @@ class FluidSolver {
   void set_interface_density_rates(const std::vector<double>& density_rates);
   // Where water is (the box around every water particle).
   sph::Region interaction_bounds() const;
-  double max_smoothing_length() const { return parameters_.h; }
   std::vector<sph::Gauge> gauge_values() const;
 
-  double time() const { return time_; }
-  long steps() const { return steps_; }
   // How many times the particles were sorted and the Verlet list rebuilt.
   long sorts() const { return sorts_; }
   // Water particles that left as thinned spray (is_thinned_spray).
   long spray_removed() const { return spray_removed_; }
-  const FluidParticles& particles() const { return particles_; }
-  // For tests that set up a state the case cannot describe; the next step
-  // recomputes everything derived from it.
-  FluidParticles& particles() { return particles_; }
-  const FluidParameters& parameters() const { return parameters_; }
   // The pairs within 2h of the last step, listed at its start.
   const sph::NeighbourList& pairs() const { return pairs_; }
   WaterGauges gauges() const { return measure(particles_, parameters_); }
@@ -112,13 +98,8 @@ class FluidSolver {
   void remove_thinned_spray();
 
   std::vector<long> interface_index_;  // particle indices of the last collect_interface
-  FluidParameters parameters_;
   TaitEquationOfState eos_;
-  FluidParticles particles_;
-  double skin_;                      // of the Verlet list (sph::kSkinOverH)
-  sph::CellGrid grid_;               // built for 2h + skin at the last sort
-  sph::CandidateList candidates_;    // the Verlet list of the last sort
-  std::vector<Vec2> x_at_sort_;      // positions at the last sort
+  sph::SortedVerletList verlet_;
   std::vector<int> walls_in_reach_;  // of the water at the last sort (walls_in_reach)
   long sorts_ = 0;
   bool spray_left_ = false;  // particles left since the last sort
@@ -127,8 +108,6 @@ class FluidSolver {
   // the wall forces until the next step.
   std::vector<Vec2> wall_forces_before_removal_;
   sph::NeighbourList pairs_;
-  double time_ = 0.0;
-  long steps_ = 0;
 };
 
 }  // namespace cosph::fluid

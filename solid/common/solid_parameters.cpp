@@ -96,9 +96,7 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
       sph::read_resolution(case_file, "solid", solid.spacing(), solid.h_factor());
   p.dx = resolution.dx;
   p.h = resolution.h;
-  require(solid.density() > 0.0, case_file, "solid.density",
-          "must be positive, got " + format_number(solid.density()) + " kg/m^3");
-  p.rho0 = solid.density();
+  p.rho0 = sph::read_density(case_file, "solid", solid.density());
   check_elastic(case_file, "solid", solid.youngs_modulus(), solid.poisson_ratio());
   p.E = solid.youngs_modulus();
   p.nu = solid.poisson_ratio();
@@ -106,12 +104,11 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
   p.G = shear_modulus(p.E, p.nu);
   p.c0 = longitudinal_sound_speed(p.K, p.G, p.rho0);
 
-  require(solid.artificial_viscosity() >= 0.0, case_file, "solid.artificial_viscosity",
-          "must not be negative");
-  require(solid.artificial_viscosity_quadratic() >= 0.0, case_file,
-          "solid.artificial_viscosity_quadratic", "must not be negative");
-  p.A = solid.artificial_viscosity() > 0.0 ? solid.artificial_viscosity() : 1.0;
-  p.B = solid.artificial_viscosity_quadratic() > 0.0 ? solid.artificial_viscosity_quadratic() : 1.0;
+  const sph::ArtificialViscosityCoefficients av = sph::read_artificial_viscosity(
+      case_file, "solid", solid.artificial_viscosity(), solid.artificial_viscosity_quadratic(),
+      sph::kSolidArtificialViscosity);
+  p.A = av.A;
+  p.B = av.B;
 
   const std::string& gradient = solid.velocity_gradient();
   require(gradient.empty() || gradient == "quadratic" || gradient == "linear", case_file,
@@ -151,8 +148,9 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
   require(!solid.has_hourglass_control() || solid.hourglass_control() >= 0.0, case_file,
           "solid.hourglass_control",
           "must not be negative (0 turns it off), got " + format_number(solid.hourglass_control()));
-  p.hourglass_alpha =
-      solid.has_hourglass_control() ? solid.hourglass_control() : kDefaultHourglassControl;
+  p.hourglass_alpha = solid.has_hourglass_control()  ? solid.hourglass_control()
+                      : p.model == SolidModel::shell ? kDefaultShellHourglassControl
+                                                     : kDefaultHourglassControl;
   if (solid.has_broken_part_below_y()) {
     const double top = solid.broken_part_below_y();
     const bool below_some_body =

@@ -48,6 +48,13 @@ struct BendingModeParameters {
 // writes alpha/2 (delta_i + delta_j): hg = 10 is alpha = 5 here.
 inline constexpr double kDefaultHourglassControl = 5.0;
 
+// Default of solid.hourglass_control for the shell (solid/shell/line_hourglass.hpp):
+// the control's stiffness of a neighbour pair is then the field's own (GA for
+// the position, EI for the rotation) over the pair's distance squared,
+// kernel-weighted. Chosen by that rule, not fitted; docs/results/shell.md
+// gives the period with it off.
+inline constexpr double kDefaultShellHourglassControl = 1.0;
+
 // The constitutive model, each with its own executable (solid.model).
 enum class SolidModel {
   jaumann,           // cosph-solid-jaumann: Gray, Monaghan & Swift 2001, Jaumann stress rate

@@ -4,10 +4,9 @@
 #pragma once
 
 #include <sstream>
-#include <string>
 
+#include "sphcore/first_runaway.hpp"
 #include "sphcore/parallel.hpp"
-#include "sphcore/runaway_error.hpp"
 
 namespace cosph::solid {
 
@@ -21,16 +20,11 @@ void stop_if_run_away(const Particles& P, double time, long steps, Screen&& pass
   const bool may_have_run_away =
       sph::parallel_any(P.size(), sph::kTeamAtAnySize, [&](long i) { return !passes_screen(i); });
   if (!may_have_run_away) return;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    const char* why = reason(i);
-    if (why == nullptr) continue;
-    std::ostringstream message;
-    message << "solid particle " << P.id[i] << " at (" << P.x[i].x() << ", " << P.x[i].y()
-            << ") m, t = " << time << " s, step " << steps << ": " << why << " (speed "
-            << P.v[i].norm() << " m/s, sound speed " << P.c[i] << " m/s";
-    details(message, i);
-    throw sph::RunawayError(message.str());
-  }
+  sph::stop_at_first_runaway(P, "solid particle", time, steps, reason,
+                             [&](std::ostringstream& message, std::size_t i) {
+                               message << ", sound speed " << P.c[i] << " m/s";
+                               details(message, i);
+                             });
 }
 
 }  // namespace cosph::solid

@@ -23,33 +23,29 @@
 namespace cosph::solid::jaumann {
 
 JaumannSolver::JaumannSolver(const sph::CaseFile& case_file, const SolidParameters& parameters)
-    : parameters_(parameters),
-      particles_(JaumannParticles::from_scene(build_solid_scene(case_file, parameters))),
-      skin_(sph::kSkinOverH * parameters.h) {
-  if (parameters_.tip_gauge)
-    tip_ids_ = tip_gauge_ids(particles_.id, particles_.x0, *parameters_.tip_gauge, parameters_.dx);
-  parameters_.unmet_walls =
-      walls_no_free_particle_is_inside(particles_.x, particles_.clamped, parameters_.unmet_walls);
+    : ContinuumSolidSolver(parameters,
+                           JaumannParticles::from_scene(build_solid_scene(case_file, parameters))),
+      verlet_(parameters.h) {
   mark_inert_clamp();
   sort();
-  compute_rates(particles_, candidates_, parameters_);  // for the renormalisation matrices
+  compute_rates(particles_, verlet_.candidates(), parameters_);  // for the renormalisation matrices
   update_stress(Including::inert);
   compute_accelerations(particles_, parameters_);
 }
 
 void JaumannSolver::sort() {
   JaumannParticles& P = particles_;
-  const double reach = sph::kernel::kSupport * parameters_.h + skin_;
-  grid_.build(P.x, reach);
-  sph::permute(grid_.order(), P.id, P.x, P.v, P.x0, P.rho, P.m, P.s, P.K, P.G, P.c, P.sigma_y,
-               P.clamped, P.failed, P.inert, P.external_a);
-  x_at_sort_ = P.x;
   // The rates pass works each pair out once, from its lower index: it needs
   // a particle's later candidates only, and its inert ones (an inert
   // particle has no list of its own). The quadratic fit needs them all.
   const bool whole = parameters_.velocity_gradient == VelocityGradient::quadratic;
-  candidates_.build(
-      grid_, P.x, reach, [&P](long i) { return !P.inert[i]; },
+  verlet_.sort(
+      P.x,
+      [&P](const std::vector<int>& order) {
+        sph::permute(order, P.id, P.x, P.v, P.x0, P.rho, P.m, P.s, P.K, P.G, P.c, P.sigma_y,
+                     P.clamped, P.failed, P.inert, P.external_a);
+      },
+      [&P](long i) { return !P.inert[i]; },
       [&P, whole](long i, int j) { return whole || j > i || P.inert[j]; });
 }
 
@@ -88,10 +84,6 @@ void JaumannSolver::update_stress(Including including) {
   });
 }
 
-sph::StepLimits JaumannSolver::step_limits() const {
-  return solid_step_limits(particles_, parameters_);
-}
-
 void JaumannSolver::begin_step(double dt) {
   advance_state(dt);
   compute_forces();
@@ -103,11 +95,10 @@ void JaumannSolver::advance_state(double dt) {
   const double moved2 = sph::parallel_max(P.size(), 0.0, sph::kTeamAtAnySize, [&](long i) {
     if (P.clamped[i]) return 0.0;
     kick_and_drift(P, i, dt, parameters_);
-    return (P.x[i] - x_at_sort_[i]).squaredNorm();
+    return verlet_.moved2(P.x[i], i);
   });
-  const double rebuild_at = sph::verlet_rebuild_distance(parameters_.h);
-  if (moved2 > rebuild_at * rebuild_at) sort();
-  compute_rates(P, candidates_, parameters_);
+  if (verlet_.stale(moved2)) sort();
+  compute_rates(P, verlet_.candidates(), parameters_);
   sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
     P.rho[i] += dt * P.drho[i];
     P.s[i] += dt * P.ds[i];
@@ -120,26 +111,6 @@ void JaumannSolver::compute_forces() {
   compute_accelerations(particles_, parameters_);
 }
 
-void JaumannSolver::end_step(double dt) {
-  closing_kick(particles_, dt);
-  time_ += dt;
-  ++steps_;
-  check_state();
-  stop_if_in_unmet_wall(particles_, parameters_.unmet_walls, time_, steps_);
-}
-
-void JaumannSolver::collect_interface(const sph::Region& region, sph::InterfaceParticles& out) {
-  interface_.collect(particles_, parameters_.h, region, out);
-}
-
-void JaumannSolver::set_interface_accelerations(const std::vector<Vec2>& accelerations) {
-  interface_.scatter(accelerations, particles_.external_a);
-}
-
-sph::Region JaumannSolver::interaction_bounds() const {
-  return sph::bounds_of(particles_.x);
-}
-
 SolidGauges JaumannSolver::gauges() const {
   const JaumannParticles& P = particles_;
   return measure(P, P.x0, tip_ids_, [&P](std::size_t i) {
@@ -150,15 +121,6 @@ SolidGauges JaumannSolver::gauges() const {
     return V * (P.p[i] * P.p[i] / (2.0 * P.K[i]) +
                 (P.s[i].squaredNorm() + trace * trace) / (4.0 * P.G[i]));
   });
-}
-
-std::vector<sph::Gauge> JaumannSolver::gauge_values() const {
-  std::vector<sph::Gauge> values = named_gauges(gauges());
-  const JaumannParticles& P = particles_;
-  for (const sph::Gauge& gauge :
-       broken_part_gauges(parameters_.broken_part_below_y, P.x0, P.x, P.m, P.clamped))
-    values.push_back(gauge);
-  return values;
 }
 
 void JaumannSolver::check_state() const {

@@ -18,34 +18,18 @@
 
 #include <vector>
 
+#include "continuum_solid_solver.hpp"
 #include "jaumann_particles.hpp"
-#include "solid_gauges.hpp"
-#include "solid_interface.hpp"
-#include "solid_parameters.hpp"
 #include "sphcore/case_file.hpp"
-#include "sphcore/cell_grid.hpp"
-#include "sphcore/gauge.hpp"
-#include "sphcore/interface_particles.hpp"
-#include "sphcore/neighbour_list.hpp"
-#include "sphcore/region.hpp"
 #include "sphcore/snapshot_writer.hpp"
-#include "sphcore/time_step.hpp"
+#include "sphcore/sorted_verlet_list.hpp"
 
 namespace cosph::solid::jaumann {
 
-class JaumannSolver {
+class JaumannSolver
+    : public ContinuumSolidSolver<JaumannSolver, JaumannParticles, &JaumannParticles::x0> {
  public:
   JaumannSolver(const sph::CaseFile& case_file, const SolidParameters& parameters);
-
-  // The largest step the solid allows now.
-  sph::StepLimits step_limits() const;
-
-  // Advances by dt. Throws sph::RunawayError if the new state is not physical;
-  // the particles then hold that bad state.
-  void step(double dt) {
-    begin_step(dt);
-    end_step(dt);
-  }
 
   // A coupled step is split where the coupler's answer is needed (as in
   // FluidSolver): begin_step kicks, drifts and evaluates the solid's own
@@ -56,27 +40,12 @@ class JaumannSolver {
   void begin_step(double dt);
   void advance_state(double dt);
   void compute_forces();  // the solid's own accelerations
-  void end_step(double dt);
 
-  // The solid particles inside `region` (clamped ones too: water presses on them).
-  void collect_interface(const sph::Region& region, sph::InterfaceParticles& out);
-  // Accelerations for the particles of the last collect_interface, in its order.
-  void set_interface_accelerations(const std::vector<Vec2>& accelerations);
-  sph::Region interaction_bounds() const;
-  double max_smoothing_length() const { return parameters_.h; }
-  std::vector<sph::Gauge> gauge_values() const;
-
-  double time() const { return time_; }
-  long steps() const { return steps_; }
-  const JaumannParticles& particles() const { return particles_; }
-  // For tests that set up a state the case cannot describe (a velocity field);
-  // the next step recomputes everything derived from it.
-  JaumannParticles& particles() { return particles_; }
-  const SolidParameters& parameters() const { return parameters_; }
   SolidGauges gauges() const;
   sph::Snapshot snapshot() const;
 
  private:
+  friend ContinuumSolidSolver;
   void sort();  // by cell, and the Verlet list rebuilt
   void mark_inert_clamp();
   enum class Including { inert, active_only };
@@ -84,16 +53,7 @@ class JaumannSolver {
   // Throws sph::RunawayError if a particle's state is not physical.
   void check_state() const;
 
-  SolidInterface interface_;  // the particles of the last collect_interface
-  SolidParameters parameters_;
-  JaumannParticles particles_;
-  std::vector<int> tip_ids_;
-  double skin_;                    // of the Verlet list (sph::kSkinOverH)
-  sph::CellGrid grid_;             // built for 2h + skin at the last sort
-  sph::CandidateList candidates_;  // the Verlet list of the last sort
-  std::vector<Vec2> x_at_sort_;    // positions at the last sort
-  double time_ = 0.0;
-  long steps_ = 0;
+  sph::SortedVerletList verlet_;
 };
 
 }  // namespace cosph::solid::jaumann

@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "reissner_beam.hpp"
-#include "sphcore/runaway_error.hpp"
+#include "sphcore/first_runaway.hpp"
 #include "sphcore/von_mises.hpp"
 
 namespace cosph::solid::shell {
@@ -21,9 +21,8 @@ const SolidParameters& checked(const sph::CaseFile& case_file, const SolidParame
   return parameters;
 }
 
-double hourglass_alpha(const sph::CaseFile& case_file) {
-  const auto& solid = case_file.config.solid();
-  return solid.has_hourglass_control() ? solid.hourglass_control() : kDefaultShellHourglassControl;
+ShellSection section_of(const ShellLine& line, const SolidParameters& parameters) {
+  return ShellSection::of(line.thickness, parameters.rho0, parameters.E, parameters.nu);
 }
 
 // The end particle farther from every clamped particle (the last one when
@@ -53,11 +52,15 @@ Vec2 EndLoad::at(double time) const {
 }
 
 ShellSolver::ShellSolver(const sph::CaseFile& case_file, const SolidParameters& parameters)
-    : parameters_(checked(case_file, parameters)),
-      line_(read_shell_line(case_file, parameters.dx)),
-      forces_{ShellSection::of(line_.thickness, parameters.rho0, parameters.E, parameters.nu),
-              line_.phi0(), hourglass_alpha(case_file), line_.ds},
-      particles_(build_shell(case_file, parameters, line_, forces_.section)),
+    : ShellSolver(case_file, parameters,
+                  read_shell_line(case_file, checked(case_file, parameters).dx)) {}
+
+ShellSolver::ShellSolver(const sph::CaseFile& case_file, const SolidParameters& parameters,
+                         const ShellLine& line)
+    : ParticleSolver(parameters,
+                     build_shell(case_file, parameters, line, section_of(line, parameters))),
+      line_(line),
+      forces_{section_of(line, parameters), line.phi0(), parameters.hourglass_alpha, line.ds},
       end_load_(read_end_load(case_file, particles_)) {
   if (parameters_.tip_gauge)
     tip_ids_ = tip_gauge_ids(particles_.id, particles_.X, *parameters_.tip_gauge, line_.ds);
@@ -156,24 +159,22 @@ std::vector<sph::Gauge> ShellSolver::gauge_values() const {
 
 void ShellSolver::check_state() const {
   const ShellParticles& P = particles_;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    const double eps = P.N[i] / forces_.section.EA();
-    const char* reason = nullptr;
-    if (!P.x[i].allFinite() || !P.v[i].allFinite() || !std::isfinite(P.theta[i]) ||
-        !std::isfinite(P.omega[i]))
-      reason = "its state is not finite";
-    else if (P.v[i].norm() > P.c[i])
-      reason = "it moves faster than the shell's axial sound speed";
-    else if (!(std::abs(eps) < 0.5))
-      reason = "its axial strain left (-0.5, 0.5) (far outside the linear law)";
-    if (reason == nullptr) continue;
-    std::ostringstream message;
-    message << "shell particle " << P.id[i] << " at (" << P.x[i].x() << ", " << P.x[i].y()
-            << ") m, t = " << time_ << " s, step " << steps_ << ": " << reason << " (speed "
-            << P.v[i].norm() << " m/s, sound speed " << P.c[i]
-            << " m/s); the run has blown up: try a smaller run.cfl";
-    throw sph::RunawayError(message.str());
-  }
+  const double EA = forces_.section.EA();
+  sph::stop_at_first_runaway(
+      P, "shell particle", time_, steps_,
+      [&P, EA](std::size_t i) -> const char* {
+        if (!P.x[i].allFinite() || !P.v[i].allFinite() || !std::isfinite(P.theta[i]) ||
+            !std::isfinite(P.omega[i]))
+          return "its state is not finite";
+        if (P.v[i].norm() > P.c[i]) return "it moves faster than the shell's axial sound speed";
+        if (!(std::abs(P.N[i] / EA) < 0.5))
+          return "its axial strain left (-0.5, 0.5) (far outside the linear law)";
+        return nullptr;
+      },
+      [&P](std::ostringstream& message, std::size_t i) {
+        message << ", sound speed " << P.c[i]
+                << " m/s); the run has blown up: try a smaller run.cfl";
+      });
 }
 
 sph::Snapshot ShellSolver::snapshot() const {

@@ -31,16 +31,11 @@
 #include "solid_parameters.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/interface_particles.hpp"
+#include "sphcore/particle_solver.hpp"
 #include "sphcore/snapshot_writer.hpp"
 #include "sphcore/time_step.hpp"
 
 namespace cosph::solid::shell {
-
-// Default of solid.hourglass_control for the shell: the control's stiffness
-// of a neighbour pair is then the field's own (GA for the position, EI for
-// the rotation) over the pair's distance squared, kernel-weighted. Chosen by
-// that rule, not fitted; docs/results/shell.md gives the period with it off.
-inline constexpr double kDefaultShellHourglassControl = 1.0;
 
 // A dead load on the free end's face (solid.end_load).
 struct EndLoad {
@@ -50,7 +45,7 @@ struct EndLoad {
   Vec2 at(double time) const;
 };
 
-class ShellSolver {
+class ShellSolver : public sph::ParticleSolver<ShellSolver, ShellParticles, SolidParameters> {
  public:
   // Throws sph::ConfigError unless the case's solid.model is shell and its
   // body is a thin box (shell_line.hpp).
@@ -58,42 +53,32 @@ class ShellSolver {
 
   sph::StepLimits step_limits() const;
 
-  void step(double dt) {
-    begin_step(dt);
-    end_step(dt);
-  }
   void begin_step(double dt);
   void end_step(double dt);
 
   void collect_interface(const sph::Region& region, sph::InterfaceParticles& out);
   void set_interface_accelerations(const std::vector<Vec2>& accelerations);
   sph::Region interaction_bounds() const;
-  double max_smoothing_length() const { return parameters_.h; }
   std::vector<sph::Gauge> gauge_values() const;
 
-  double time() const { return time_; }
-  long steps() const { return steps_; }
-  const ShellParticles& particles() const { return particles_; }
-  // For tests: the state set directly, then update() for strains and forces.
-  ShellParticles& particles() { return particles_; }
+  // For tests: the state set directly (particles()), then update() for
+  // strains and forces.
   void update();
-  const SolidParameters& parameters() const { return parameters_; }
   const ShellForceParameters& force_parameters() const { return forces_; }
   const ShellLine& line() const { return line_; }
   sph::Snapshot snapshot() const;
 
  private:
+  // The particles are built on the line: read first, checked parameters.
+  ShellSolver(const sph::CaseFile& case_file, const SolidParameters& parameters,
+              const ShellLine& line);
   void check_state() const;
 
-  SolidParameters parameters_;
   ShellLine line_;
   ShellForceParameters forces_;
-  ShellParticles particles_;
   ShellFaces faces_;
   std::optional<EndLoad> end_load_;
   std::vector<int> tip_ids_;
-  double time_ = 0.0;
-  long steps_ = 0;
 };
 
 }  // namespace cosph::solid::shell

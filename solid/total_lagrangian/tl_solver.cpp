@@ -26,24 +26,16 @@ const SolidParameters& checked(const sph::CaseFile& case_file, const SolidParame
 }  // namespace
 
 TLSolver::TLSolver(const sph::CaseFile& case_file, const SolidParameters& parameters)
-    : parameters_(checked(case_file, parameters)),
+    : ContinuumSolidSolver(
+          parameters, build_reference_configuration(case_file, checked(case_file, parameters))),
       forces_{parameters.h, parameters.A, parameters.B, parameters.hourglass_alpha,
-              parameters.run.gravity},
-      particles_(build_reference_configuration(case_file, parameters)) {
-  parameters_.unmet_walls =
-      walls_no_free_particle_is_inside(particles_.x, particles_.clamped, parameters_.unmet_walls);
-  if (parameters_.tip_gauge)
-    tip_ids_ = tip_gauge_ids(particles_.id, particles_.X, *parameters_.tip_gauge, parameters_.dx);
+              parameters.run.gravity} {
   update();
 }
 
 void TLSolver::update() {
   compute_deformation_and_stress(particles_);
   compute_accelerations(particles_, forces_);
-}
-
-sph::StepLimits TLSolver::step_limits() const {
-  return solid_step_limits(particles_, parameters_);
 }
 
 void TLSolver::begin_step(double dt) {
@@ -55,38 +47,9 @@ void TLSolver::begin_step(double dt) {
   check_state();  // before the state is shown to anyone, the coupler included
 }
 
-void TLSolver::end_step(double dt) {
-  closing_kick(particles_, dt);
-  time_ += dt;
-  ++steps_;
-  check_state();
-  stop_if_in_unmet_wall(particles_, parameters_.unmet_walls, time_, steps_);
-}
-
-void TLSolver::collect_interface(const sph::Region& region, sph::InterfaceParticles& out) {
-  interface_.collect(particles_, parameters_.h, region, out);
-}
-
-void TLSolver::set_interface_accelerations(const std::vector<Vec2>& accelerations) {
-  interface_.scatter(accelerations, particles_.external_a);
-}
-
-sph::Region TLSolver::interaction_bounds() const {
-  return sph::bounds_of(particles_.x);
-}
-
 SolidGauges TLSolver::gauges() const {
   const TLParticles& P = particles_;
   return measure(P, P.X, tip_ids_, [&P](std::size_t i) { return P.V0[i] * P.strain_energy[i]; });
-}
-
-std::vector<sph::Gauge> TLSolver::gauge_values() const {
-  std::vector<sph::Gauge> values = named_gauges(gauges());
-  const TLParticles& P = particles_;
-  for (const sph::Gauge& gauge :
-       broken_part_gauges(parameters_.broken_part_below_y, P.X, P.x, P.m, P.clamped))
-    values.push_back(gauge);
-  return values;
 }
 
 void TLSolver::check_state() const {

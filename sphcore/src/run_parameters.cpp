@@ -36,4 +36,18 @@ Resolution read_resolution(const CaseFile& case_file, const std::string& block, 
   return {spacing, factor * spacing};
 }
 
+double read_density(const CaseFile& case_file, const std::string& block, double density) {
+  require(density > 0.0, case_file, block + ".density",
+          "must be positive, got " + format_number(density) + " kg/m^3");
+  return density;
+}
+
+ArtificialViscosityCoefficients read_artificial_viscosity(
+    const CaseFile& case_file, const std::string& block, double A, double B,
+    const ArtificialViscosityCoefficients& defaults) {
+  require(A >= 0.0, case_file, block + ".artificial_viscosity", "must not be negative");
+  require(B >= 0.0, case_file, block + ".artificial_viscosity_quadratic", "must not be negative");
+  return {A > 0.0 ? A : defaults.A, B > 0.0 ? B : defaults.B};
+}
+
 }  // namespace sph

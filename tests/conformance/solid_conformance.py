@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Conformance suite for a cosph solid executable (issue 7).
+"""Conformance suite for a cosph solid executable.
 
 Any solid model that takes part in a coupled cosph run must pass it:
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "fluid_scene.hpp"
 #include "fluid_test_support.hpp"
@@ -32,54 +33,62 @@ bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
 }
 
+// What cosph-fluid says on stderr as it refuses the case at `path` with
+// `overrides`; the refusal must be bad input, exit code 2.
+std::string refusal(const std::string& path, const std::vector<std::string>& overrides = {}) {
+  ScratchDir dir("bad_input");
+  const auto run = run_cosph_fluid(path, dir.file("out"), overrides);
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  return run.err;
+}
+
+// A case with one line of the dam break replaced, written to `dir`.
+std::string written_dam_break(const ScratchDir& dir, const std::string& name,
+                              const std::string& line, const std::string& replacement) {
+  const std::string path = dir.file(name);
+  write_text(path, dam_break_with(line, replacement));
+  return path;
+}
+
 TEST(BadInput, UnknownFieldGivesFileLineAndColumn) {
   ScratchDir dir("bad_input");
-  const std::string path = dir.file("typo.pbtxt");
-  write_text(path, dam_break_with("  density: 1000", "  densty: 1000"));
-  const auto run = run_cosph_fluid(path, dir.file("out"));
-  EXPECT_EQ(run.exit_code, 2) << run.err;
+  const std::string path =
+      written_dam_break(dir, "typo.pbtxt", "  density: 1000", "  densty: 1000");
+  const std::string err = refusal(path);
   // "cosph-fluid: error: FILE:LINE:COLUMN: ... "densty"": line 19 of the case.
-  EXPECT_TRUE(contains(run.err, "cosph-fluid: error: " + path + ":19:")) << run.err;
-  EXPECT_TRUE(contains(run.err, "densty")) << run.err;
+  EXPECT_TRUE(contains(err, "cosph-fluid: error: " + path + ":19:")) << err;
+  EXPECT_TRUE(contains(err, "densty")) << err;
 }
 
 TEST(BadInput, NegativeSpacingNamesTheField) {
-  ScratchDir dir("bad_input");
-  const auto run = run_cosph_fluid(kDamBreak, dir.file("out"), {"fluid.spacing=-0.008"});
-  EXPECT_EQ(run.exit_code, 2) << run.err;
-  EXPECT_TRUE(contains(run.err, kDamBreak + ": fluid.spacing: must be positive")) << run.err;
+  const std::string err = refusal(kDamBreak, {"fluid.spacing=-0.008"});
+  EXPECT_TRUE(contains(err, kDamBreak + ": fluid.spacing: must be positive")) << err;
 }
 
 TEST(BadInput, MissingCaseFileNamesThePath) {
   ScratchDir dir("bad_input");
   const std::string path = dir.file("no_such_case.pbtxt");
-  const auto run = run_cosph_fluid(path, dir.file("out"));
-  EXPECT_EQ(run.exit_code, 2) << run.err;
-  EXPECT_TRUE(contains(run.err, path)) << run.err;
+  const std::string err = refusal(path);
+  EXPECT_TRUE(contains(err, path)) << err;
 }
 
 TEST(BadInput, UnknownOverrideNamesTheField) {
-  ScratchDir dir("bad_input");
-  const auto run = run_cosph_fluid(kDamBreak, dir.file("out"), {"fluid.spasing=0.004"});
-  EXPECT_EQ(run.exit_code, 2) << run.err;
-  EXPECT_TRUE(contains(run.err, "spasing")) << run.err;
+  const std::string err = refusal(kDamBreak, {"fluid.spasing=0.004"});
+  EXPECT_TRUE(contains(err, "spasing")) << err;
 }
 
 TEST(BadInput, WallsThatDoNotCloseAreRefused) {
   ScratchDir dir("bad_input");
-  const std::string path = dir.file("no_right_wall.pbtxt");
-  write_text(path, dam_break_with("  walls { min { x: 0.576 y: 0 } max { x: 0.6 y: 0.4 } }", ""));
-  const auto run = run_cosph_fluid(path, dir.file("out"));
-  EXPECT_EQ(run.exit_code, 2) << run.err;
-  EXPECT_TRUE(contains(run.err, path + ": fluid.walls: do not close fluid.water[0]")) << run.err;
-  EXPECT_TRUE(contains(run.err, "to the right")) << run.err;
+  const std::string path = written_dam_break(
+      dir, "no_right_wall.pbtxt", "  walls { min { x: 0.576 y: 0 } max { x: 0.6 y: 0.4 } }", "");
+  const std::string err = refusal(path);
+  EXPECT_TRUE(contains(err, path + ": fluid.walls: do not close fluid.water[0]")) << err;
+  EXPECT_TRUE(contains(err, "to the right")) << err;
 }
 
 TEST(BadInput, WallOverlappingTheWaterIsRefused) {
-  ScratchDir dir("bad_input");
-  const auto run = run_cosph_fluid(kDamBreak, dir.file("out"), {"fluid.walls[1].max.x=0.05"});
-  EXPECT_EQ(run.exit_code, 2) << run.err;
-  EXPECT_TRUE(contains(run.err, "fluid.walls[1]: overlaps fluid.water[0]")) << run.err;
+  const std::string err = refusal(kDamBreak, {"fluid.walls[1].max.x=0.05"});
+  EXPECT_TRUE(contains(err, "fluid.walls[1]: overlaps fluid.water[0]")) << err;
 }
 
 // A coupled case: the fluid alone refuses it, so the check is called as
@@ -105,11 +114,9 @@ TEST(BadInput, WaterOverlappingTheSolidIsRefused) {
 
 TEST(BadInput, WallThinnerThanTheSupportIsRefused) {
   // The right wall cut to 10 mm, less than 2h = 20.8 mm.
-  ScratchDir dir("bad_input");
-  const auto run = run_cosph_fluid(kDamBreak, dir.file("out"), {"fluid.walls[2].min.x=0.59"});
-  EXPECT_EQ(run.exit_code, 2) << run.err;
-  EXPECT_TRUE(contains(run.err, kDamBreak + ": fluid.walls[2]: is 0.01 m thick")) << run.err;
-  EXPECT_TRUE(contains(run.err, "2h")) << run.err;
+  const std::string err = refusal(kDamBreak, {"fluid.walls[2].min.x=0.59"});
+  EXPECT_TRUE(contains(err, kDamBreak + ": fluid.walls[2]: is 0.01 m thick")) << err;
+  EXPECT_TRUE(contains(err, "2h")) << err;
 }
 
 TEST(BadInput, MalformedCommandLine) {

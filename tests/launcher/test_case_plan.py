@@ -1,42 +1,17 @@
 """`cosph run` refuses a bad coupling.* value through the real cosph-case,
 before any process starts, naming the file, the field and the reason.
 
-COSPH_TEST_BIN is the folder of the built cosph-case (ctest sets it; default
-build/bin). The coupler, fluid and solid are the fakes of fake_bin/, which
-record in FAKE_DIR that they were started.
+The coupler, fluid and solid are the fakes of fake_bin/, which record in
+FAKE_DIR that they were started (fake_programs.py).
 """
-import os
-import shutil
 import subprocess
-import tempfile
 import unittest
-from pathlib import Path
 
-HERE = Path(__file__).resolve().parent
-REPO = HERE.parent.parent
-FAKE_BIN = HERE / "fake_bin"
-REAL_BIN = Path(os.environ.get("COSPH_TEST_BIN", REPO / "build" / "bin"))
+from fake_programs import REPO, FakeProgramsWithRealCase
 
 
-class BadCouplingFields(unittest.TestCase):
-    def setUp(self):
-        case_exe = REAL_BIN / "cosph-case"
-        if not os.access(case_exe, os.X_OK):
-            if os.environ.get("COSPH_TEST_BIN"):
-                self.fail(f"{case_exe} is missing (COSPH_TEST_BIN={REAL_BIN})")
-            self.skipTest(f"no built {case_exe}; set COSPH_TEST_BIN")
-        self.tmp = Path(tempfile.mkdtemp(prefix="cosph-plan-"))
-        self.bin = self.tmp / "bin"
-        shutil.copytree(FAKE_BIN, self.bin)
-        (self.bin / "cosph-case").unlink()
-        (self.bin / "cosph-case").symlink_to(case_exe.resolve())
-        self.state = self.tmp / "state"
-        self.state.mkdir()
-        self.env = {k: v for k, v in os.environ.items() if not k.startswith(("COSPH_", "FAKE_"))}
-        self.env.update(COSPH_BIN=str(self.bin), FAKE_DIR=str(self.state), FAKE_STEPS="3")
-
-    def tearDown(self):
-        shutil.rmtree(self.tmp, ignore_errors=True)
+class BadCouplingFields(FakeProgramsWithRealCase, unittest.TestCase):
+    tmp_prefix = "cosph-plan-"
 
     def launch(self, *settings):
         command = [str(REPO / "coupler" / "cosph"), "run", "elastic_plate",

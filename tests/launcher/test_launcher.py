@@ -134,7 +134,7 @@ class LauncherTest(unittest.TestCase):
     # -- successful runs
 
     def test_single_process_success(self):
-        rc, out, err = self.run_case("--set", "fluid.dx=0.01")
+        rc, out, err = self.run_case("--set", "fluid.spacing=0.01")
         self.assertEqual(rc, 0, err)
         # Passed-through lines carry the prefix; progress lines are parsed, not echoed.
         self.assertIn("[fluid] starting, case ", out)
@@ -150,11 +150,11 @@ class LauncherTest(unittest.TestCase):
         command = (self.out / "command.txt").read_text()
         self.assertIn("cosph-case plan ", command)
         self.assertIn(f"cosph-fluid --case {self.tmp}/repo/cases/dam_break.pbtxt "
-                      f"--out {self.out} --set fluid.dx=0.01", command)
+                      f"--out {self.out} --set fluid.spacing=0.01", command)
         # One process: no endpoint.
         self.assertEqual(self.fake_args("cosph-fluid"),
                          ["--case", str(self.tmp / "repo/cases/dam_break.pbtxt"),
-                          "--out", str(self.out), "--set", "fluid.dx=0.01"])
+                          "--out", str(self.out), "--set", "fluid.spacing=0.01"])
         self.assert_all_gone(1)
 
     def test_three_processes_get_endpoint_and_sets(self):
@@ -277,7 +277,7 @@ class LauncherTest(unittest.TestCase):
         self.assertFalse(self.out.exists())
 
     def test_bad_set_is_refused(self):
-        for bad in ("fluid.dx", "=3", "fluid.dx=", "two words=1"):
+        for bad in ("fluid.spacing", "=3", "fluid.spacing=", "two words=1"):
             with self.subTest(bad=bad):
                 rc, _, err = self.run_case("--set", "ok=1", "--set", bad)
                 self.assertEqual(rc, 2)
@@ -303,7 +303,7 @@ class LauncherTest(unittest.TestCase):
         self.assertEqual(self.recorded_pids(), {})
 
     def test_plan_error_passes_through(self):
-        message = "dam_break.pbtxt: field fluid.dx: must be positive, got -1"
+        message = "dam_break.pbtxt: field fluid.spacing: must be positive, got -1"
         rc, out, err = self.run_case(FAKE_PLAN_ERROR=message, FAKE_PLAN_CODE="4")
         self.assertEqual(rc, 4)
         self.assertEqual(err, message + "\n")   # verbatim, nothing added

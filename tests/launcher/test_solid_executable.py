@@ -1,27 +1,20 @@
 """The launcher starts a solid of the user's own that only the case names
 (solid.executable), through the real cosph-case, and refuses a case whose
-program is missing before anything starts (issue 7).
+program is missing before anything starts.
 
 Run from the repository root:
     COSPH_TEST_BIN=build/bin /usr/bin/python3 -m unittest discover -s tests/launcher -v
 
-COSPH_TEST_BIN is the folder of the built cosph-case (ctest sets it; default
-build/bin). The coupler and the fluid are the fakes of fake_bin/, copied next
-to a link to the real cosph-case; the third-party solid is a fake too
-(fake_solver.py), named my-solid, in the case's folder or on PATH.
+The coupler and the fluid are the fakes of fake_bin/, copied next to a link
+to the real cosph-case (fake_programs.py); the third-party solid is a fake
+too (fake_solver.py), named my-solid, in the case's folder or on PATH.
 """
 import json
 import os
-import shutil
 import subprocess
-import tempfile
 import unittest
-from pathlib import Path
 
-HERE = Path(__file__).resolve().parent
-REPO = HERE.parent.parent
-FAKE_BIN = HERE / "fake_bin"
-REAL_BIN = Path(os.environ.get("COSPH_TEST_BIN", REPO / "build" / "bin"))
+from fake_programs import FAKE_BIN, REPO, FakeProgramsWithRealCase
 
 MY_SOLID = f"""#!/usr/bin/python3
 # A solid model of someone else's: the fake solver, under another name.
@@ -41,29 +34,15 @@ def coupled_case(executable, model="my_model"):
                         f'model: "{model}"\n  executable: "{executable}"')
 
 
-class ThirdPartySolid(unittest.TestCase):
+class ThirdPartySolid(FakeProgramsWithRealCase, unittest.TestCase):
+    tmp_prefix = "cosph-3rd-"
+
     def setUp(self):
-        case_exe = REAL_BIN / "cosph-case"
-        if not os.access(case_exe, os.X_OK):
-            if os.environ.get("COSPH_TEST_BIN"):
-                self.fail(f"{case_exe} is missing (COSPH_TEST_BIN={REAL_BIN})")
-            self.skipTest(f"no built {case_exe}; set COSPH_TEST_BIN")
-        self.tmp = Path(tempfile.mkdtemp(prefix="cosph-3rd-"))
-        self.bin = self.tmp / "bin"
-        shutil.copytree(FAKE_BIN, self.bin)
-        (self.bin / "cosph-case").unlink()
-        (self.bin / "cosph-case").symlink_to(case_exe.resolve())
+        super().setUp()
         (self.bin / "cosph-solid-jaumann").unlink()   # the built-in solid must not be what runs
         self.cases = self.tmp / "my_cases"
         self.cases.mkdir()
-        self.state = self.tmp / "state"
-        self.state.mkdir()
         self.out = self.tmp / "out"
-        self.env = {k: v for k, v in os.environ.items() if not k.startswith(("COSPH_", "FAKE_"))}
-        self.env.update(COSPH_BIN=str(self.bin), FAKE_DIR=str(self.state), FAKE_STEPS="3")
-
-    def tearDown(self):
-        shutil.rmtree(self.tmp, ignore_errors=True)
 
     def install(self, folder, name="my-solid", executable=True):
         folder.mkdir(parents=True, exist_ok=True)

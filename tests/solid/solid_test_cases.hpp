@@ -7,11 +7,15 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "bending_mode.hpp"
+#include "solid_parameters.hpp"
 #include "sphcore/runaway_error.hpp"
+#include "sphcore/types.hpp"
 
 namespace cosph::solid::testing {
 
@@ -112,6 +116,28 @@ double tip_period_until(Solver& solver, double end_time) {
 // The oscillating plate of cases/oscillating_plate.pbtxt.
 inline std::string plate_case_path() {
   return std::string(COSPH_SOURCE_DIR) + "/cases/oscillating_plate.pbtxt";
+}
+
+// The period of that plate (0.2 m long, 0.02 m thick, clamped at one end)
+// by thin-plate theory, with the case's material.
+inline double thin_plate_period(const SolidParameters& par) {
+  return 2.0 * std::numbers::pi / cantilever_angular_frequency(par.E, par.nu, par.rho0, 0.02, 0.2);
+}
+
+// The particles' total momentum sum m v, per unit depth.
+template <class Particles>
+sph::Vec2 total_momentum(const Particles& P) {
+  sph::Vec2 sum = sph::Vec2::Zero();
+  for (std::size_t i = 0; i < P.size(); ++i) sum += P.m[i] * P.v[i];
+  return sum;
+}
+
+// sum m |v|: the scale that a change of total momentum is round-off against.
+template <class Particles>
+double momentum_scale(const Particles& P) {
+  double scale = 0.0;
+  for (std::size_t i = 0; i < P.size(); ++i) scale += P.m[i] * P.v[i].norm();
+  return scale;
 }
 
 }  // namespace cosph::solid::testing

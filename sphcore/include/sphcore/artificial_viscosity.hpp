@@ -26,9 +26,9 @@ inline double artificial_viscosity(const Vec2& x_ij, const Vec2& v_ij, double h_
 
 // The same Pi_ij for pairs that share h and c (one fluid), with one division
 // and no branch: in flowing water whether a pair approaches is a coin toss,
-// and the mispredicted branch of artificial_viscosity() cost more than
-// computing Pi for every pair (the dam break at 4 mm to t = 0.6 s ran 26-30 %
-// faster). In a bending solid the pattern is regular and the branch wins.
+// and the mispredicted branch of artificial_viscosity() costs more than
+// computing Pi for every pair (docs/performance.md). In a bending solid the
+// pattern is regular and the branch wins.
 // Equal to artificial_viscosity() to round-off; exactly +0 for receding pairs,
 // where h v_ij . x_ij is clamped to 0.
 //   Pi_ij = (-A c h v.x d + B (h v.x)^2) / (d^2 rho_ij),  d = r^2 + 0.01 h^2.

@@ -3,11 +3,10 @@
 // total-Lagrangian solid, the fitted velocity gradient of the Jaumann one).
 // It is kept as the two columns of the 2x2 matrix, b_x a and b_y a, each one
 // register: summed as an Eigen 2x2 matrix it went through the stack, and
-// reading it back whole from two half-width stores stalled every term (perf:
-// two thirds of the total-Lagrangian deformation pass). GradientSums
-// (renormalisation.hpp) keeps its sums as vectors for the same reason, in
-// its own code: built on this class, it gave the same bits but the water's
-// largest benchmark scene ran about 2 % slower (CPU time, 6 interleaved pairs).
+// reading it back whole from two half-width stores stalled every term.
+// GradientSums (renormalisation.hpp) keeps its sums as vectors for the same
+// reason, in its own code: built on this class, it gave the same bits but
+// the water's pass ran slower.
 #pragma once
 
 #include "sphcore/types.hpp"

@@ -1,4 +1,5 @@
-// The case's "run" block, validated, with its defaults applied.
+// The case's "run" block, and the fields every phase's block has alike,
+// validated, with their defaults applied.
 #pragma once
 
 #include <string>
@@ -28,5 +29,27 @@ struct Resolution {
 };
 Resolution read_resolution(const CaseFile& case_file, const std::string& block, double spacing,
                            double h_factor);
+
+// A phase's rest density from its block's `density`, which must be positive.
+double read_density(const CaseFile& case_file, const std::string& block, double density);
+
+// Monaghan's coefficients of a phase's pairs (docs/physics.md, "Artificial
+// viscosity"): A the linear, B the quadratic term.
+struct ArtificialViscosityCoefficients {
+  double A;
+  double B;
+};
+// The defaults, by the rule of docs/physics.md ("Artificial viscosity"):
+// within the usual ranges, A = 0.01 to 0.1 and B = 0 for water, A ~ B ~ 1 for
+// a solid. The coupler's pairs take one phase's (coupler_settings.cpp).
+inline constexpr ArtificialViscosityCoefficients kWaterArtificialViscosity{0.02, 0.0};
+inline constexpr ArtificialViscosityCoefficients kSolidArtificialViscosity{1.0, 1.0};
+
+// A phase's coefficients from its block's `artificial_viscosity` (A) and
+// `artificial_viscosity_quadratic` (B): neither may be negative; 0 takes the
+// phase's default.
+ArtificialViscosityCoefficients read_artificial_viscosity(
+    const CaseFile& case_file, const std::string& block, double A, double B,
+    const ArtificialViscosityCoefficients& defaults);
 
 }  // namespace sph

@@ -154,14 +154,8 @@ solid {
 )"));
   JaumannSolver solver(case_file, read_solid_parameters(case_file));
   const JaumannParticles& P = solver.particles();
-  auto momentum = [&] {
-    Vec2 sum = Vec2::Zero();
-    for (std::size_t i = 0; i < P.size(); ++i) sum += P.m[i] * P.v[i];
-    return sum;
-  };
-  double scale = 0.0;
-  for (std::size_t i = 0; i < P.size(); ++i) scale += P.m[i] * P.v[i].norm();
-  const Vec2 before = momentum();
+  const double scale = testing::momentum_scale(P);
+  const Vec2 before = testing::total_momentum(P);
   long failed_midway = -1;
   for (int k = 0; k < 600; ++k) {
     solver.step(solver.step_limits().smallest());
@@ -171,8 +165,8 @@ solid {
   // Failure happened during the run, not all at once, and not everywhere.
   EXPECT_GT(failed, failed_midway) << "failed at step 100: " << failed_midway;
   EXPECT_LT(failed, static_cast<long>(P.size()));
-  EXPECT_LT((momentum() - before).norm(), 1e-12 * scale)
-      << (momentum() - before).transpose() << " against " << scale;
+  const Vec2 change = testing::total_momentum(P) - before;
+  EXPECT_LT(change.norm(), 1e-12 * scale) << change.transpose() << " against " << scale;
 }
 
 TEST(WallContact, ParticleInsideIsPutOnTheNearestFaceAndStopsGoingIn) {

@@ -131,18 +131,12 @@ TEST(TotalLagrangian, FreeBodyConservesMomentum) {
     P.v[i] = Vec2(unit(random), unit(random));  // m/s, against c = 37 m/s
   }
   solver.update();
-  auto momentum = [&] {
-    Vec2 sum = Vec2::Zero();
-    for (std::size_t i = 0; i < P.size(); ++i) sum += P.m[i] * P.v[i];
-    return sum;
-  };
-  double scale = 0.0;
-  for (std::size_t i = 0; i < P.size(); ++i) scale += P.m[i] * P.v[i].norm();
-  const Vec2 before = momentum();
+  const double scale = testing::momentum_scale(P);
+  const Vec2 before = testing::total_momentum(P);
   const std::vector<Vec2> v_before = P.v;
   for (int k = 0; k < 200; ++k) solver.step(solver.step_limits().smallest());
-  EXPECT_LT((momentum() - before).norm(), 1e-12 * scale)
-      << (momentum() - before).transpose() << " against " << scale;
+  const Vec2 change = testing::total_momentum(P) - before;
+  EXPECT_LT(change.norm(), 1e-12 * scale) << change.transpose() << " against " << scale;
   // And the particles did exchange momentum.
   double exchanged = 0.0;
   for (std::size_t i = 0; i < P.size(); ++i) exchanged += P.m[i] * (P.v[i] - v_before[i]).norm();
@@ -289,8 +283,7 @@ TEST(OscillatingPlateTl, CoarsePeriodNearThinPlateTheory) {
   const SolidParameters par = read_solid_parameters(case_file);
   TLSolver solver(case_file, par);
   const double T = testing::tip_period_until(solver, par.run.end_time);
-  const double T_theory =
-      2.0 * M_PI / cantilever_angular_frequency(par.E, par.nu, par.rho0, 0.02, 0.2);
+  const double T_theory = testing::thin_plate_period(par);
   EXPECT_NEAR(T / T_theory, 1.0, kCoarsePeriodTolerance) << "T = " << T << " s";
 }
 
