@@ -39,13 +39,18 @@ void FluidSolver::find_neighbours(bool sort) {
     grid_.build(P.x, reach, 2);
     P.permute_state(grid_.order());
     x_at_sort_ = P.x;
-    candidates_.build(grid_, P.x, reach, [&P](long i) { return P.is_water(i); });
+    list_candidates(reach);
     // Walls far from the water cost nothing until the next sort.
     walls_in_reach_ = walls_in_reach(P, grid_, reach);
     rest_walls_out_of_reach(P, walls_in_reach_, eos_);
     ++sorts_;
   }
   pairs_.build(candidates_, P.x, parameters_.h);
+}
+
+void FluidSolver::list_candidates(double reach) {
+  const FluidParticles& P = particles_;
+  candidates_.build(grid_, x_at_sort_, reach, [&P](long i) { return P.is_water(i); });
 }
 
 void FluidSolver::update_pressure() {

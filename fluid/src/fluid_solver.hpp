@@ -17,6 +17,7 @@
 #include "gauges.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/cell_grid.hpp"
+#include "sphcore/checkpoint.hpp"
 #include "sphcore/gauge.hpp"
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/neighbour_list.hpp"
@@ -83,10 +84,17 @@ class FluidSolver {
   std::vector<Vec2> wall_forces() const;
   sph::Snapshot snapshot() const;
 
+  // Everything the next step reads, for a checkpoint; restore() takes it back
+  // into a solver built from the same case (fluid_checkpoint.cpp).
+  void save(sph::Checkpoint& checkpoint) const;
+  void restore(const sph::Checkpoint& checkpoint);
+
  private:
   // Lists this step's pairs from the Verlet list, first re-sorting the
   // particles and rebuilding that list if it may have missed one.
   void find_neighbours(bool sort);
+  // The Verlet list from the grid and the positions of the last sort.
+  void list_candidates(double reach);
   void update_pressure();
   void check_state() const;
   // False when every particle passes runaway_reason's tests with room to

@@ -44,12 +44,17 @@ void JaumannSolver::sort() {
   sph::permute(grid_.order(), P.id, P.x, P.v, P.x0, P.rho, P.m, P.s, P.K, P.G, P.c, P.sigma_y,
                P.clamped, P.failed, P.inert, P.external_a);
   x_at_sort_ = P.x;
+  list_candidates(reach);
+}
+
+void JaumannSolver::list_candidates(double reach) {
+  const JaumannParticles& P = particles_;
   // The rates pass works each pair out once, from its lower index: it needs
   // a particle's later candidates only, and its inert ones (an inert
   // particle has no list of its own). The quadratic fit needs them all.
   const bool whole = parameters_.velocity_gradient == VelocityGradient::quadratic;
   candidates_.build(
-      grid_, P.x, reach, [&P](long i) { return !P.inert[i]; },
+      grid_, x_at_sort_, reach, [&P](long i) { return !P.inert[i]; },
       [&P, whole](long i, int j) { return whole || j > i || P.inert[j]; });
 }
 

@@ -24,6 +24,7 @@
 #include "solid_parameters.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/cell_grid.hpp"
+#include "sphcore/checkpoint.hpp"
 #include "sphcore/gauge.hpp"
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/neighbour_list.hpp"
@@ -76,8 +77,15 @@ class JaumannSolver {
   SolidGauges gauges() const;
   sph::Snapshot snapshot() const;
 
+  // Everything the next step reads, for a checkpoint; restore() takes it back
+  // into a solver built from the same case (jaumann_checkpoint.cpp).
+  void save(sph::Checkpoint& checkpoint) const;
+  void restore(const sph::Checkpoint& checkpoint);
+
  private:
   void sort();  // by cell, and the Verlet list rebuilt
+  // The Verlet list from the grid and the positions of the last sort.
+  void list_candidates(double reach);
   void mark_inert_clamp();
   enum class Including { inert, active_only };
   void update_stress(Including including);

@@ -1,6 +1,7 @@
 // The case's "run" block, validated, with its defaults applied.
 #pragma once
 
+#include <cmath>
 #include <string>
 
 #include "sphcore/case_file.hpp"
@@ -15,6 +16,8 @@ struct RunParameters {
   double cfl;
   Vec2 gravity;
   int threads;  // 0: all cores
+  // Simulated time between checkpoints (docs/restart.md); infinite: none.
+  double checkpoint_interval = INFINITY;
 };
 
 RunParameters read_run_parameters(const CaseFile& case_file);
