@@ -25,6 +25,7 @@ int run_solver(Solver& solver, const sph::RunParameters& run, const sph::CaseFil
     CoupledRun<Solver> coupled(solver, run,
                                {args.out_dir, name, phase, description, args.endpoint, timeout});
     coupled.revise_threads_with(threads);
+    coupled.checkpoint_with({sph::run_identity(case_file), args.resume_from});
     return coupled.run();
   }
   std::vector<sph::Column> columns;
