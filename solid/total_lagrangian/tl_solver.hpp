@@ -21,6 +21,7 @@
 #include "solid_interface.hpp"
 #include "solid_parameters.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/checkpoint.hpp"
 #include "sphcore/gauge.hpp"
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/region.hpp"
@@ -66,6 +67,11 @@ class TLSolver {
   const ForceParameters& force_parameters() const { return forces_; }
   SolidGauges gauges() const;
   sph::Snapshot snapshot() const;
+
+  // Everything the next step reads, for a checkpoint; restore() takes it back
+  // into a solver built from the same case (tl_checkpoint.cpp).
+  void save(sph::Checkpoint& checkpoint) const;
+  void restore(const sph::Checkpoint& checkpoint);
 
  private:
   // Throws sph::RunawayError if a particle's state is not physical.
