@@ -310,6 +310,7 @@ class Session {
                    std::vector<double>{wait_seconds_, messaging_seconds_, pair_seconds_,
                                        pace_setter_waiting_, pace_setter_waited_before_});
     checkpoint.put_count("pace_setter", pace_setter_);
+    sph::put_intervals(checkpoint, settings_.run);
     checkpoint.write(settings_.out_dir, "coupler", step, settings_.checkpoints.identity);
   }
 
@@ -333,6 +334,7 @@ class Session {
     pace_setter_waiting_ = seconds.at(3);
     pace_setter_waited_before_ = seconds.at(4);
     pace_setter_ = static_cast<int>(checkpoint.count("pace_setter"));
+    sph::take_intervals(checkpoint, settings_.run);
     timeseries_.emplace(settings_.out_dir + "/timeseries.csv", columns_,
                         sph::TimeSeriesWriter::ContinueAfter{
                             static_cast<std::size_t>(checkpoint.count("timeseries_rows"))});

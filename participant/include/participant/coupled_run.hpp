@@ -218,6 +218,7 @@ class CoupledRun {
       checkpoint.put_value("proposed_dt", proposed_dt_);
       checkpoint.put_value("next_snapshot", next_snapshot_);
       checkpoint.put_value("largest_overstep", largest_overstep_);
+      sph::put_intervals(checkpoint, run_);
       checkpoint.write(settings_.out_dir, settings_.name, windows_, checkpoints_.identity);
     }
   }
@@ -240,6 +241,7 @@ class CoupledRun {
       proposed_dt_ = checkpoint.value("proposed_dt");
       next_snapshot_ = checkpoint.value("next_snapshot");
       largest_overstep_ = checkpoint.value("largest_overstep");
+      sph::take_intervals(checkpoint, run_);
       windows_ = checkpoint.sequence();
       last_snapshot_ = "(none since the resume)";
       last_time_ = solver_.time();

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "sphcore/case_file.hpp"
+#include "sphcore/run_parameters.hpp"
 #include "sphcore/types.hpp"
 
 namespace sph {
@@ -108,6 +109,20 @@ concept Checkpointable = requires(Solver& solver, const Solver& done, Checkpoint
   done.save(out);
   solver.restore(in);
 };
+
+// The output, snapshot and checkpoint intervals of a run: a resume keeps
+// those of the first run, even where their defaults follow a longer end time.
+inline void put_intervals(Checkpoint& checkpoint, const RunParameters& run) {
+  checkpoint.put("intervals", std::vector<double>{run.output_interval, run.snapshot_interval,
+                                                  run.checkpoint_interval});
+}
+inline void take_intervals(const Checkpoint& checkpoint, RunParameters& run) {
+  std::vector<double> intervals;
+  checkpoint.get("intervals", intervals);
+  run.output_interval = intervals.at(0);
+  run.snapshot_interval = intervals.at(1);
+  run.checkpoint_interval = intervals.at(2);
+}
 
 // How a run checkpoints: who it is, and where it resumes from.
 struct CheckpointSettings {

@@ -129,6 +129,7 @@ class StandaloneRun {
       checkpoint.put_value("next_output", next_output_);
       checkpoint.put_value("next_snapshot", next_snapshot_);
       checkpoint.put_value("next_checkpoint", next_checkpoint_);
+      put_intervals(checkpoint, run_);
       checkpoint.write(out_dir_, name_, solver_.steps(), checkpoints_.identity);
     }
   }
@@ -145,6 +146,7 @@ class StandaloneRun {
       next_output_ = checkpoint.value("next_output");
       next_snapshot_ = checkpoint.value("next_snapshot");
       next_checkpoint_ = checkpoint.value("next_checkpoint");
+      take_intervals(checkpoint, run_);
       last_good_ = solver_.snapshot();
       last_good_time_ = solver_.time();
     } else {
