@@ -2,6 +2,7 @@
 
 import argparse
 import os
+import shlex
 import sys
 import time
 from pathlib import Path
@@ -13,6 +14,7 @@ from .locate import (BUILD_HINT, available_cases, bin_dir, check_sets, find_exe,
 from .output_dir import prepare_out_dir
 from .plan import (check_endpoint, child_commands, core_placement, default_endpoint, pinning_pays,
                    run_plan)
+from .resume import check_resume_sets, last_complete_checkpoint, recorded_run
 from .supervise import Child, Run, SignalState
 
 def print_summary(out, wall_s, children):
@@ -73,7 +75,18 @@ def build_parser(repo):
                           "other processes keep the cores busy (by default, only when the "
                           "cores are free)")
     add_plot_parser(sub)
-    return parser
+    resume = sub.add_parser(
+        "resume", help="continue a stopped run from its last checkpoint",
+        description="Continue a run that was stopped, killed or crashed from the last "
+                    "checkpoint all its processes finished, with the case and settings "
+                    "recorded in its output folder (case.pbtxt, command.txt); its "
+                    "timeseries.csv, coupling.csv and snapshot indexes continue in place "
+                    "(docs/restart.md).")
+    resume.add_argument("dir", metavar="DIR", help="output folder of the run (its --out)")
+    resume.add_argument("--set", action="append", default=[], metavar="run.end_time=T",
+                        help="a later end time; no other field may change")
+    resume.add_argument("--quiet", action="store_true", help="show no progress")
+    return parser, run
 
 
 def add_plot_parser(sub):
@@ -120,6 +133,36 @@ def cmd_plot(args):
     return EXIT_OK
 
 
+def cmd_resume(args, repo, signals, run_parser):
+    """Runs the recorded run again from its last complete checkpoint."""
+    check_sets(args.set)
+    check_resume_sets(args.set)
+    out = Path(os.path.abspath(os.path.expanduser(args.dir)))
+    recorded = recorded_run(out, run_parser)
+    case = out / "case.pbtxt"
+    if not case.is_file():
+        raise UsageError(f"{case}: missing: is {out} the output folder of a cosph run?")
+    sets = recorded.set + args.set   # a later --set wins
+    folder = bin_dir(repo)
+    _plan_cmd, names, separate_cores = run_plan(find_exe(folder, "cosph-case"), case, sets)
+    for name in names:
+        find_exe(folder, name)
+    checkpoints = last_complete_checkpoint(out, names)
+    endpoint = recorded.endpoint or default_endpoint(out)
+    commands = [cmd + ["--resume", str(checkpoints[name])] for name, cmd in
+                zip(names, child_commands(names, folder, case, out, sets, endpoint))]
+    emit(sys.stderr, f"cosph: resuming {out} from {checkpoints[names[0]].name.split('_')[-1][:-3]}"
+                     f" ({', '.join(str(p.name) for p in checkpoints.values())})\n")
+    try:
+        with open(out / "command.txt", "a") as record:
+            record.write("# resumed:\n" + "\n".join(shlex.join(c) for c in commands) + "\n")
+    except OSError as err:
+        raise UsageError(f"cannot record the resume in {out / 'command.txt'}: {err}") from err
+    args.no_pin = args.pin = False
+    return start_and_supervise(args, out, names, commands, separate_cores, signals,
+                               on_cores=lambda placement: None)
+
+
 def cmd_run(args, repo, signals):
     check_sets(args.set)
     case = resolve_case(args.case, repo)
@@ -135,13 +178,22 @@ def cmd_run(args, repo, signals):
     elif args.endpoint:
         emit(sys.stderr, f"cosph: note: --endpoint is not used, {names[0]} runs alone\n")
     commands = child_commands(names, folder, case, out, args.set, endpoint)
+    return start_and_supervise(
+        args, out, names, commands, separate_cores, signals,
+        on_cores=lambda placement: prepare_out_dir(out, case, plan_cmd, commands,
+                                                   [placement.get(n) for n in names]))
+
+
+def start_and_supervise(args, out, names, commands, separate_cores, signals, on_cores):
+    """Starts the processes, the solvers of a multi-rate run on cores of their
+    own where that pays, and supervises them; on_cores(placement) runs first."""
     allowed = os.sched_getaffinity(0)
     placement = {} if args.no_pin else core_placement(names, separate_cores, allowed)
     if placement and not args.pin and not pinning_pays(allowed):
         placement = {}
         emit(sys.stderr, "cosph: multi-rate run: other processes keep the cores busy, so the "
                          "scheduler places the solvers (--pin: cores of their own anyway)\n")
-    prepare_out_dir(out, case, plan_cmd, commands, [placement.get(n) for n in names])
+    on_cores(placement)
 
     mode = "quiet" if args.quiet else ("tty" if sys.stderr.isatty() else "plain")
     console = Console(mode)
@@ -174,10 +226,12 @@ def main(argv):
     signals.install()
     repo = repo_dir()
     try:
-        parser = build_parser(repo)
+        parser, run_parser = build_parser(repo)
         args = parser.parse_args(argv)
         if args.command == "plot":
             return cmd_plot(args)
+        if args.command == "resume":
+            return cmd_resume(args, repo, signals, run_parser)
         if args.command != "run":
             parser.print_help(sys.stderr)
             return EXIT_BAD_INPUT

@@ -24,6 +24,7 @@ int run(int argc, char** argv) {
                "the coupler needs an endpoint to bind (ipc://PATH or tcp://HOST:PORT)");
   settings.endpoint = args.endpoint;
   settings.out_dir = args.out_dir;
+  settings.checkpoints = {sph::run_identity(case_file), args.resume_from};
   std::cout << "cosph-coupler: sub-stepping: " << settings.stepping_reason << std::endl;
   sph::make_output_dir(args.out_dir);
   sph::install_stop_handlers();

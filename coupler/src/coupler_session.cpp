@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <sstream>
 
 #include "common_step.hpp"
 #include "participant/bound_ipc_file.hpp"
@@ -51,8 +52,10 @@ class Session {
   }
 
   int run() {
+    const bool resuming = !settings_.checkpoints.resume_from.empty();
+    if (resuming) resume();
     handshake();
-    for (long step = 0;; ++step) {
+    for (long step = resuming ? checkpoint_step_ + 1 : 0;; ++step) {
       const int last_in = receive_states(step);
       count_pace_setter_wait(last_in);
       const bool stop = answer(step, last_in);
@@ -128,7 +131,8 @@ class Session {
       }
       const cp::Hello& hello = message.envelope.hello();
       const int side = hello.phase() == cp::SOLID ? kSolid : kFluid;
-      const std::string problem = cp::check_hello(hello, side == kSolid ? cp::SOLID : cp::FLUID);
+      std::string problem = cp::check_hello(hello, side == kSolid ? cp::SOLID : cp::FLUID);
+      if (problem.empty()) problem = check_resumed_step(hello, side);
       if (!problem.empty() || !peers_[side].identity.empty()) {
         const std::string reason =
             problem.empty() ? "a second " + std::string(kSideName[side]) + " solver connected"
@@ -152,6 +156,23 @@ class Session {
     }
     std::cout << "cosph-coupler: coupling '" << peers_[kFluid].solver << "' and '"
               << peers_[kSolid].solver << "' at " << settings_.endpoint << std::endl;
+  }
+
+  // The three parts of a checkpoint are taken at one coupling step.
+  std::string check_resumed_step(const cp::Hello& hello, int side) const {
+    const bool resuming = !settings_.checkpoints.resume_from.empty();
+    const std::string solver = kSideName[side];
+    if (!resuming && hello.resumed())
+      return "the " + solver + " resumes from its checkpoint at coupling step " +
+             std::to_string(hello.resumed_step()) + ", the coupler starts the run afresh";
+    if (resuming && !hello.resumed())
+      return "the " + solver + " starts afresh, the coupler resumes from its checkpoint at step " +
+             std::to_string(checkpoint_step_) + " (" + settings_.checkpoints.resume_from + ")";
+    if (resuming && static_cast<long>(hello.resumed_step()) != checkpoint_step_)
+      return "the checkpoint's parts do not match: the " + solver + " resumes from coupling step " +
+             std::to_string(hello.resumed_step()) + ", the coupler from step " +
+             std::to_string(checkpoint_step_) + " (" + settings_.checkpoints.resume_from + ")";
+    return {};
   }
 
   // Particles of `side` that the other phase can reach within the next step:
@@ -189,7 +210,7 @@ class Session {
       peer.bounds = cp::from_proto(peer.state.bounds());
       peer.max_h = peer.state.max_smoothing_length();
       if (!peer.state.gauges().empty()) {
-        if (timeseries_ && peer.state.gauges_size() != peer.gauges.size())
+        if (!peer.gauges.empty() && peer.state.gauges_size() != peer.gauges.size())
           fail(std::string(kSideName[side]) + " changed the set of gauges it sends during the run");
         peer.gauges.Swap(peer.state.mutable_gauges());
       }
@@ -235,6 +256,7 @@ class Session {
     record(step, t, dt, forces, stop);
     // Asked for ahead: the solvers then pay for gauges on these states only.
     row_due_ = !stop && (t + dt >= next_output_ || t + dt >= end - 1e-9 * end);
+    const bool checkpoint = !stop && t >= next_checkpoint_;
 
     const auto send_start = Clock::now();
     // The solver whose state came last sets the pace; the other has been
@@ -248,6 +270,7 @@ class Session {
       s.set_whole_step(settings_.solid_at_fluid_step);
       s.set_came_last(side == last_in);
       s.set_report_gauges(row_due_);
+      s.set_checkpoint(checkpoint);
       const auto& a = side == kFluid ? forces.fluid_a : forces.solid_a;
       s.mutable_acceleration()->Resize(2 * static_cast<int>(a.size()), 0.0);
       std::copy_n(cp::doubles_of(a), 2 * a.size(), s.mutable_acceleration()->mutable_data());
@@ -261,9 +284,63 @@ class Session {
       }
     }
     messaging_seconds_ += std::chrono::duration<double>(Clock::now() - send_start).count();
+    if (checkpoint) {
+      next_checkpoint_ += settings_.run.checkpoint_interval;
+      write_checkpoint(step);
+    }
     // The last report is forced, so the launcher's summary names the end time.
     progress_.report(t, step, dt, stop);
     return stop;
+  }
+
+  // What decides the coupler's next answers and rows, taken after its answer
+  // at `step`: the solvers take theirs after the window that answer closes.
+  void write_checkpoint(long step) const {
+    sph::Checkpoint checkpoint;
+    checkpoint.put_value("next_output", next_output_);
+    checkpoint.put_value("next_checkpoint", next_checkpoint_);
+    checkpoint.put_flag("row_due", row_due_);
+    checkpoint.put_count("level", level_);
+    std::string columns;
+    for (const sph::Column& column : columns_) columns += column.name + "\n" + column.unit + "\n";
+    checkpoint.put_text("timeseries_columns", columns);
+    checkpoint.put_count("timeseries_rows", static_cast<long>(timeseries_->rows()));
+    checkpoint.put_count("coupling_rows", static_cast<long>(coupling_->rows()));
+    checkpoint.put("seconds",
+                   std::vector<double>{wait_seconds_, messaging_seconds_, pair_seconds_,
+                                       pace_setter_waiting_, pace_setter_waited_before_});
+    checkpoint.put_count("pace_setter", pace_setter_);
+    sph::put_intervals(checkpoint, settings_.run);
+    checkpoint.write(settings_.out_dir, "coupler", step, settings_.checkpoints.identity);
+  }
+
+  void resume() {
+    const sph::Checkpoint checkpoint =
+        sph::Checkpoint::read(settings_.checkpoints.resume_from, settings_.checkpoints.identity);
+    checkpoint_step_ = checkpoint.sequence();
+    next_output_ = checkpoint.value("next_output");
+    next_checkpoint_ = checkpoint.value("next_checkpoint");
+    row_due_ = checkpoint.flag("row_due");
+    level_ = static_cast<int>(checkpoint.count("level"));
+    std::istringstream columns(checkpoint.text("timeseries_columns"));
+    sph::Column column;
+    while (std::getline(columns, column.name) && std::getline(columns, column.unit))
+      columns_.push_back(column);
+    std::vector<double> seconds;
+    checkpoint.get("seconds", seconds);
+    wait_seconds_ = seconds.at(0);
+    messaging_seconds_ = seconds.at(1);
+    pair_seconds_ = seconds.at(2);
+    pace_setter_waiting_ = seconds.at(3);
+    pace_setter_waited_before_ = seconds.at(4);
+    pace_setter_ = static_cast<int>(checkpoint.count("pace_setter"));
+    sph::take_intervals(checkpoint, settings_.run);
+    timeseries_.emplace(settings_.out_dir + "/timeseries.csv", columns_,
+                        sph::TimeSeriesWriter::ContinueAfter{
+                            static_cast<std::size_t>(checkpoint.count("timeseries_rows"))});
+    coupling_.emplace(settings_.out_dir + "/coupling.csv", coupling_columns(),
+                      sph::TimeSeriesWriter::ContinueAfter{
+                          static_cast<std::size_t>(checkpoint.count("coupling_rows"))});
   }
 
   void record(long step, double t, double dt, const CrossPhaseForces& forces, bool stop) {
@@ -314,24 +391,28 @@ class Session {
     }
     // The water level at the left wall, the scene's name for the fluid's "height".
     columns.push_back({"level", "m"});
+    columns_ = columns;
     timeseries_.emplace(settings_.out_dir + "/timeseries.csv", columns);
-    coupling_.emplace(settings_.out_dir + "/coupling.csv",
-                      std::vector<sph::Column>{{"t", "s"},
-                                               {"force_on_fluid_x", "N/m"},
-                                               {"force_on_fluid_y", "N/m"},
-                                               {"force_on_solid_x", "N/m"},
-                                               {"force_on_solid_y", "N/m"},
-                                               {"fluid_interface_particles", "1"},
-                                               {"solid_interface_particles", "1"},
-                                               {"pairs", "1"},
-                                               {"step", "1"},
-                                               {"waiting", "s"},
-                                               {"messaging", "s"},
-                                               {"pair_forces", "s"},
-                                               {"dt", "s"},
-                                               {"fluid_waiting", "s"},
-                                               {"solid_waiting", "s"},
-                                               {"pace_setter_waiting", "s"}});
+    coupling_.emplace(settings_.out_dir + "/coupling.csv", coupling_columns());
+  }
+
+  static std::vector<sph::Column> coupling_columns() {
+    return std::vector<sph::Column>{{"t", "s"},
+                                    {"force_on_fluid_x", "N/m"},
+                                    {"force_on_fluid_y", "N/m"},
+                                    {"force_on_solid_x", "N/m"},
+                                    {"force_on_solid_y", "N/m"},
+                                    {"fluid_interface_particles", "1"},
+                                    {"solid_interface_particles", "1"},
+                                    {"pairs", "1"},
+                                    {"step", "1"},
+                                    {"waiting", "s"},
+                                    {"messaging", "s"},
+                                    {"pair_forces", "s"},
+                                    {"dt", "s"},
+                                    {"fluid_waiting", "s"},
+                                    {"solid_waiting", "s"},
+                                    {"pace_setter_waiting", "s"}};
   }
 
   CouplerSettings settings_;
@@ -341,6 +422,9 @@ class Session {
   zmq::socket_t socket_{context_, zmq::socket_type::router};
   std::array<Peer, 2> peers_;
   std::optional<sph::TimeSeriesWriter> timeseries_, coupling_;
+  std::vector<sph::Column> columns_;  // of timeseries.csv
+  double next_checkpoint_ = settings_.run.checkpoint_interval;
+  long checkpoint_step_ = -1;  // of the checkpoint resumed from
   int level_ = -1;
   double next_output_ = 0.0;
   // The states in hand go into timeseries.csv: asked for with the last

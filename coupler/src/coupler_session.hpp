@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cross_phase_forces.hpp"
+#include "sphcore/checkpoint.hpp"
 #include "sphcore/run_parameters.hpp"
 
 namespace cosph::coupler {
@@ -21,6 +22,7 @@ struct CouplerSettings {
   // too (a stability test that must end in an error).
   bool solid_at_fluid_step = false;
   double timeout_seconds;
+  sph::CheckpointSettings checkpoints;  // docs/restart.md
 };
 
 // Returns the exit code; throws cosph::coupling::CouplingError when a peer

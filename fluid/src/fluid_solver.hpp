@@ -16,6 +16,7 @@
 #include "fluid_particles.hpp"
 #include "gauges.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/checkpoint.hpp"
 #include "sphcore/gauge.hpp"
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/neighbour_list.hpp"
@@ -68,6 +69,11 @@ class FluidSolver : public sph::ParticleSolver<FluidSolver, FluidParticles, Flui
   // the last force evaluation.
   std::vector<Vec2> wall_forces() const;
   sph::Snapshot snapshot() const;
+
+  // Everything the next step reads, for a checkpoint; restore() takes it back
+  // into a solver built from the same case (fluid_checkpoint.cpp).
+  void save(sph::Checkpoint& checkpoint) const;
+  void restore(const sph::Checkpoint& checkpoint);
 
  private:
   // Lists this step's pairs from the Verlet list, first re-sorting the

@@ -63,7 +63,7 @@ Participant::~Participant() = default;
 
 sph::Region Participant::connect(PhaseKind phase, const std::string& solver_name,
                                  std::size_t particle_count, double max_smoothing_length,
-                                 const sph::Region& bounds) {
+                                 const sph::Region& bounds, long resumed_step) {
   Envelope hello;
   Hello& h = *hello.mutable_hello();
   h.set_protocol_version(kProtocolVersion);
@@ -72,6 +72,8 @@ sph::Region Participant::connect(PhaseKind phase, const std::string& solver_name
   h.set_particle_count(particle_count);
   h.set_max_smoothing_length(max_smoothing_length);
   *h.mutable_bounds() = to_proto(bounds);
+  h.set_resumed(resumed_step >= 0);
+  h.set_resumed_step(static_cast<std::uint64_t>(std::max(resumed_step, 0L)));
   send(impl_->socket, hello);
   const Envelope welcome = impl_->await("its Welcome");
   if (!welcome.has_welcome())
@@ -118,6 +120,7 @@ StepReply Participant::await_step() {
                         " density rates for " + std::to_string(sent) + " particles");
   StepReply out{s.dt(), {}, {}, from_proto(s.send_region()), s.stop(), s.whole_step()};
   out.report_gauges = s.report_gauges();
+  out.checkpoint = s.checkpoint();
   out.acceleration.resize(static_cast<std::size_t>(s.acceleration_size() / 2));
   std::copy_n(s.acceleration().data(), 2 * out.acceleration.size(), doubles_of(out.acceleration));
   out.density_rate.assign(s.density_rate().begin(), s.density_rate().end());

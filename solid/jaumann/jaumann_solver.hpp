@@ -21,6 +21,7 @@
 #include "continuum_solid_solver.hpp"
 #include "jaumann_particles.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/checkpoint.hpp"
 #include "sphcore/snapshot_writer.hpp"
 #include "sphcore/sorted_verlet_list.hpp"
 
@@ -43,6 +44,11 @@ class JaumannSolver
 
   SolidGauges gauges() const;
   sph::Snapshot snapshot() const;
+
+  // Everything the next step reads, for a checkpoint; restore() takes it back
+  // into a solver built from the same case (jaumann_checkpoint.cpp).
+  void save(sph::Checkpoint& checkpoint) const;
+  void restore(const sph::Checkpoint& checkpoint);
 
  private:
   friend ContinuumSolidSolver;

@@ -30,6 +30,7 @@
 #include "solid_gauges.hpp"
 #include "solid_parameters.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/checkpoint.hpp"
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/particle_solver.hpp"
 #include "sphcore/snapshot_writer.hpp"
@@ -67,6 +68,11 @@ class ShellSolver : public sph::ParticleSolver<ShellSolver, ShellParticles, Soli
   const ShellForceParameters& force_parameters() const { return forces_; }
   const ShellLine& line() const { return line_; }
   sph::Snapshot snapshot() const;
+
+  // Everything the next step reads, for a checkpoint; restore() takes it back
+  // into a solver built from the same case (shell_checkpoint.cpp).
+  void save(sph::Checkpoint& checkpoint) const;
+  void restore(const sph::Checkpoint& checkpoint);
 
  private:
   // The particles are built on the line: read first, checked parameters.

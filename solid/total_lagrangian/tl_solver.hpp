@@ -19,6 +19,7 @@
 
 #include "continuum_solid_solver.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/checkpoint.hpp"
 #include "sphcore/snapshot_writer.hpp"
 #include "tl_dynamics.hpp"
 #include "tl_particles.hpp"
@@ -41,6 +42,11 @@ class TLSolver : public ContinuumSolidSolver<TLSolver, TLParticles, &TLParticles
   const ForceParameters& force_parameters() const { return forces_; }
   SolidGauges gauges() const;
   sph::Snapshot snapshot() const;
+
+  // Everything the next step reads, for a checkpoint; restore() takes it back
+  // into a solver built from the same case (tl_checkpoint.cpp).
+  void save(sph::Checkpoint& checkpoint) const;
+  void restore(const sph::Checkpoint& checkpoint);
 
  private:
   friend ContinuumSolidSolver;

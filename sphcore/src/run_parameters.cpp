@@ -1,5 +1,7 @@
 #include "sphcore/run_parameters.hpp"
 
+#include <cmath>
+
 namespace sph {
 
 RunParameters read_run_parameters(const CaseFile& case_file) {
@@ -23,6 +25,13 @@ RunParameters read_run_parameters(const CaseFile& case_file) {
   p.cfl = run.cfl() > 0.0 ? run.cfl() : 0.25;
   p.gravity = Vec2(run.gravity().x(), run.gravity().y());
   p.threads = run.threads();
+  require(std::isfinite(run.checkpoint_interval()), case_file, "run.checkpoint_interval",
+          "must be a number (negative: no checkpoints)");
+  // About ten checkpoints per run: a stopped run loses a tenth of it at most,
+  // for ten writes of the state.
+  p.checkpoint_interval = run.checkpoint_interval() > 0.0    ? run.checkpoint_interval()
+                          : run.checkpoint_interval() == 0.0 ? p.end_time / 10.0
+                                                             : INFINITY;
   return p;
 }
 

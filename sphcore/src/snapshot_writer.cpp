@@ -5,7 +5,10 @@
 #include <cstdio>
 #include <fstream>
 #include <numeric>
+#include <sstream>
 #include <stdexcept>
+
+#include "sphcore/checkpoint.hpp"
 
 namespace sph {
 
@@ -50,6 +53,48 @@ std::string SnapshotWriter::write_extra(const Snapshot& snapshot, double time,
   const std::string path = out_dir_ + "/" + name_ + "_" + label + ".h5";
   write_file(snapshot, time, path);
   return path;
+}
+
+void SnapshotWriter::save(Checkpoint& checkpoint) const {
+  std::vector<double> times;
+  std::vector<long> sizes;
+  std::string layouts;  // one line per snapshot: NAME COMPONENTS INTEGER ...
+  for (const Entry& e : entries_) {
+    times.push_back(e.time);
+    sizes.push_back(static_cast<long>(e.size));
+    for (const FieldLayout& field : e.fields)
+      layouts += field.name + " " + std::to_string(field.components) + " " +
+                 (field.is_integer ? "1 " : "0 ");
+    layouts += "\n";
+  }
+  checkpoint.put("snapshot_times", times);
+  checkpoint.put("snapshot_sizes", sizes);
+  checkpoint.put_text("snapshot_fields", layouts);
+}
+
+void SnapshotWriter::restore(const Checkpoint& checkpoint) {
+  std::vector<double> times;
+  std::vector<long> sizes;
+  checkpoint.get("snapshot_times", times);
+  checkpoint.get("snapshot_sizes", sizes);
+  std::istringstream layouts(checkpoint.text("snapshot_fields"));
+  entries_.clear();
+  for (std::size_t k = 0; k < times.size(); ++k) {
+    char number[24];
+    std::snprintf(number, sizeof number, "%06zu", k);
+    Entry entry{name_ + "_" + number + ".h5", times[k], static_cast<std::size_t>(sizes.at(k)), {}};
+    std::string line;
+    std::getline(layouts, line);
+    std::istringstream fields(line);
+    FieldLayout field;
+    int is_integer = 0;
+    while (fields >> field.name >> field.components >> is_integer) {
+      field.is_integer = is_integer != 0;
+      entry.fields.push_back(field);
+    }
+    entries_.push_back(std::move(entry));
+  }
+  write_index();
 }
 
 namespace {

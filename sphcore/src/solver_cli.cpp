@@ -12,7 +12,8 @@ namespace sph {
 SolverArgs parse_solver_args(int argc, char** argv, const std::string& program,
                              const std::string& summary) {
   const std::string usage =
-      "usage: " + program + " --case FILE --out DIR [--set FIELD=VALUE ...] [--endpoint E]";
+      "usage: " + program +
+      " --case FILE --out DIR [--set FIELD=VALUE ...] [--endpoint E] [--resume FILE]";
   SolverArgs args;
   for (int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
@@ -23,6 +24,7 @@ SolverArgs parse_solver_args(int argc, char** argv, const std::string& program,
                 << "  --out DIR            output folder (created if missing)\n"
                 << "  --set FIELD=VALUE    override a case field, e.g. fluid.spacing=0.004\n"
                 << "  --endpoint E         coupler endpoint (ipc:// or tcp://); none: run alone\n"
+                << "  --resume FILE        continue from this checkpoint (docs/restart.md)\n"
                 << "\nUsually started by the launcher: coupler/cosph run CASE --out DIR\n";
       std::exit(0);
     }
@@ -36,6 +38,8 @@ SolverArgs parse_solver_args(int argc, char** argv, const std::string& program,
       args.overrides.push_back(value);
     else if (option == "--endpoint")
       args.endpoint = value;
+    else if (option == "--resume")
+      args.resume_from = value;
     else
       throw ConfigError(program + ": unknown option " + option + "\n" + usage);
   }

@@ -15,6 +15,10 @@
 // gauges each solver sends with the states it asks them for (those due in it);
 // each solver writes its own snapshots.
 //
+// A Checkpointable solver writes a checkpoint when the coupler's answer asks
+// for one, after the window that answer closes, and resumes from one
+// (docs/restart.md): its state, the answer in hand, and the counters.
+//
 // What the solver must offer is the concept CoupledSolver
 // (coupled_solver.hpp); optionally set_interface_density_rates, and
 // advance_state with compute_forces (SplitsItsStep).
@@ -29,6 +33,7 @@
 
 #include "participant/coupled_solver.hpp"
 #include "participant/participant.hpp"
+#include "sphcore/checkpoint.hpp"
 #include "sphcore/gauge.hpp"
 #include "sphcore/region.hpp"
 #include "sphcore/run_control.hpp"
@@ -68,6 +73,9 @@ class CoupledRun {
   // After every step, threads.revise(): the thread count follows the free cores.
   void revise_threads_with(sph::RunThreads& threads) { threads_ = &threads; }
 
+  // Checkpoints as `settings` says (a solver that is not Checkpointable writes none).
+  void checkpoint_with(sph::CheckpointSettings settings) { checkpoints_ = std::move(settings); }
+
   // Returns 0 when the coupler stopped the run at its end, 130 on Ctrl-C.
   int run() {
     try {
@@ -86,18 +94,28 @@ class CoupledRun {
 
  private:
   int loop() {
+    const bool resuming = !checkpoints_.resume_from.empty();
+    StepReply reply{};
+    if (resuming) reply = resume();
     sph::Region region = participant_.connect(
         settings_.phase, settings_.solver_description, solver_.particles().size(),
-        solver_.max_smoothing_length(), solver_.interaction_bounds());
+        solver_.max_smoothing_length(), solver_.interaction_bounds(), resuming ? windows_ : -1);
     sph::ProgressReporter progress(run_.end_time);
-    StepReply reply = exchange(region, solver_.time(), windows_);
-    double next_snapshot = 0.0;
+    if (!resuming) reply = exchange(region, solver_.time(), windows_);
+    // A resumed run's first state is its checkpoint's, whose snapshot and
+    // checkpoint were written before.
+    bool outputs_done = resuming;
     for (;;) {
-      if (solver_.time() >= next_snapshot || reply.stop) {
-        write_snapshot();
-        next_snapshot += run_.snapshot_interval;
+      if (outputs_done) {
+        outputs_done = false;
+      } else {
+        if (solver_.time() >= next_snapshot_ || reply.stop) {
+          write_snapshot();
+          next_snapshot_ += run_.snapshot_interval;
+        }
+        if (reply.stop) break;
+        if (reply.checkpoint) write_checkpoint(reply);
       }
-      if (reply.stop) break;
       if (sph::stop_requested()) {
         write_snapshot();
         participant_.report_error(settings_.name + " was interrupted (Ctrl-C or SIGTERM)");
@@ -186,6 +204,54 @@ class CoupledRun {
     return note.str();
   }
 
+  void write_checkpoint(const StepReply& reply) {
+    if constexpr (sph::Checkpointable<Solver>) {
+      sph::Checkpoint checkpoint;
+      solver_.save(checkpoint);
+      snapshots_.save(checkpoint);
+      checkpoint.put_value("window", reply.dt);
+      const sph::Region& r = reply.send_region;
+      checkpoint.put("send_region",
+                     std::vector<double>{r.min.x(), r.min.y(), r.max.x(), r.max.y()});
+      checkpoint.put_flag("whole_step", reply.whole_step);
+      checkpoint.put_flag("report_gauges", report_gauges_);
+      checkpoint.put_value("proposed_dt", proposed_dt_);
+      checkpoint.put_value("next_snapshot", next_snapshot_);
+      checkpoint.put_value("largest_overstep", largest_overstep_);
+      sph::put_intervals(checkpoint, run_);
+      checkpoint.write(settings_.out_dir, settings_.name, windows_, checkpoints_.identity);
+    }
+  }
+
+  // The solver's state and the coupler's answer in hand at the checkpoint.
+  StepReply resume() {
+    if constexpr (sph::Checkpointable<Solver>) {
+      const sph::Checkpoint checkpoint =
+          sph::Checkpoint::read(checkpoints_.resume_from, checkpoints_.identity);
+      solver_.restore(checkpoint);
+      snapshots_.restore(checkpoint);
+      StepReply reply{};
+      reply.dt = checkpoint.value("window");
+      std::vector<double> r;
+      checkpoint.get("send_region", r);
+      reply.send_region = sph::Region{sph::Vec2(r.at(0), r.at(1)), sph::Vec2(r.at(2), r.at(3))};
+      reply.whole_step = checkpoint.flag("whole_step");
+      report_gauges_ = checkpoint.flag("report_gauges");
+      reply.report_gauges = report_gauges_;
+      proposed_dt_ = checkpoint.value("proposed_dt");
+      next_snapshot_ = checkpoint.value("next_snapshot");
+      largest_overstep_ = checkpoint.value("largest_overstep");
+      sph::take_intervals(checkpoint, run_);
+      windows_ = checkpoint.sequence();
+      last_snapshot_ = "(none since the resume)";
+      last_time_ = solver_.time();
+      return reply;
+    } else {
+      throw sph::ConfigError(checkpoints_.resume_from +
+                             ": this solver cannot resume from a checkpoint");
+    }
+  }
+
   void write_snapshot() {
     last_snapshot_ = snapshots_.write(solver_.snapshot(), solver_.time());
     last_time_ = solver_.time();
@@ -202,6 +268,8 @@ class CoupledRun {
   long windows_ = 0;               // exchanges so far after the first: the coupler's step count
   bool report_gauges_ = true;      // the next state goes into timeseries.csv (the first does)
   double largest_overstep_ = 0.0;  // largest step taken whole over the proposed one
+  double next_snapshot_ = 0.0;
+  sph::CheckpointSettings checkpoints_;
   std::string last_snapshot_ = "(none yet)";
   double last_time_ = 0.0;
 };

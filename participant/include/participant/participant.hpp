@@ -24,6 +24,7 @@ struct StepReply {
   bool stop;                            // the run is over
   bool whole_step;                      // take dt in one step, however long (a stability test)
   bool report_gauges = false;           // send gauges with the next state
+  bool checkpoint = false;              // checkpoint at this step (docs/restart.md)
 };
 
 class Participant {
@@ -37,8 +38,11 @@ class Participant {
   Participant& operator=(const Participant&) = delete;
 
   // The handshake. Returns the region to send particles from first.
+  // resumed_step: the coupling step of the checkpoint the solver resumes
+  // from, or -1 for a run from the start.
   sph::Region connect(PhaseKind phase, const std::string& solver_name, std::size_t particle_count,
-                      double max_smoothing_length, const sph::Region& bounds);
+                      double max_smoothing_length, const sph::Region& bounds,
+                      long resumed_step = -1);
 
   // One step's exchange, in two halves so that a solver can work between
   // them: its interface state out, then the coupler's answer for it in.

@@ -9,6 +9,7 @@
 #include "participant/coupled_run.hpp"
 #include "participant/coupling_timeout.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/checkpoint.hpp"
 #include "sphcore/gauge.hpp"
 #include "sphcore/solver_cli.hpp"
 #include "sphcore/standalone_run.hpp"
@@ -24,6 +25,7 @@ int run_solver(Solver& solver, const sph::RunParameters& run, const sph::CaseFil
     CoupledRun<Solver> coupled(solver, run,
                                {args.out_dir, name, phase, description, args.endpoint, timeout});
     coupled.revise_threads_with(threads);
+    coupled.checkpoint_with({sph::run_identity(case_file), args.resume_from});
     return coupled.run();
   }
   std::vector<sph::Column> columns;
@@ -34,6 +36,7 @@ int run_solver(Solver& solver, const sph::RunParameters& run, const sph::CaseFil
     return values;
   });
   alone.revise_threads_with(threads);
+  alone.checkpoint_with({sph::run_identity(case_file), args.resume_from});
   return alone.run();
 }
 

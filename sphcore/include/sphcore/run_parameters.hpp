@@ -2,6 +2,7 @@
 // validated, with their defaults applied.
 #pragma once
 
+#include <cmath>
 #include <string>
 
 #include "sphcore/case_file.hpp"
@@ -16,6 +17,8 @@ struct RunParameters {
   double cfl;
   Vec2 gravity;
   int threads;  // 0: all cores
+  // Simulated time between checkpoints (docs/restart.md); infinite: none.
+  double checkpoint_interval = INFINITY;
 };
 
 RunParameters read_run_parameters(const CaseFile& case_file);

@@ -21,6 +21,8 @@
 
 namespace sph {
 
+class Checkpoint;
+
 // The particle data of one snapshot, gathered by a solver.
 class Snapshot {
  public:
@@ -56,6 +58,11 @@ class SnapshotWriter {
   // Writes DIR/NAME_<label>.h5 outside the time series (for example the last
   // good state of a run that blew up). Returns its path.
   std::string write_extra(const Snapshot& snapshot, double time, const std::string& label);
+
+  // The snapshots listed so far, for a checkpoint; restore() lists those of
+  // a checkpoint again, so that a resumed run's index lists each once.
+  void save(Checkpoint& checkpoint) const;
+  void restore(const Checkpoint& checkpoint);
 
  private:
   struct FieldLayout {

@@ -1,5 +1,5 @@
 // The command line every cosph executable shares:
-//   EXE --case FILE --out DIR [--set FIELD=VALUE ...] [--endpoint E] [--help]
+//   EXE --case FILE --out DIR [--set FIELD=VALUE ...] [--endpoint E] [--resume FILE] [--help]
 // and the outermost error handling: bad input exits 2, a failed run exits 1,
 // each with one line "EXE: error: ..." on stderr.
 #pragma once
@@ -14,7 +14,8 @@ struct SolverArgs {
   std::string case_path;
   std::string out_dir;
   std::vector<std::string> overrides;
-  std::string endpoint;  // empty: run alone
+  std::string endpoint;     // empty: run alone
+  std::string resume_from;  // a checkpoint (docs/restart.md); empty: from the start
 };
 
 // Throws ConfigError on a malformed command line. Prints help and exits 0 on --help.

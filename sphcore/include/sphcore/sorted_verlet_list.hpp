@@ -36,6 +36,25 @@ class SortedVerletList {
     candidates_.build(grid_, x, reach_, std::forward<Filters>(filters)...);
   }
 
+  // Takes back the state of a sort from a checkpoint: x_at_sort, the
+  // positions at that sort, already in cell order. The grid and the list are
+  // rebuilt from them, the same bits as at the sort itself (the list of the
+  // sort was built from the same positions). Returns false if x_at_sort is not
+  // in the grid's order, which a checkpoint of this build cannot give.
+  template <class... Filters>
+  bool restore(std::vector<Vec2> x_at_sort, Filters&&... filters) {
+    grid_.build(x_at_sort, reach_, subdivisions_);
+    const std::vector<int>& order = grid_.order();
+    for (std::size_t i = 0; i < order.size(); ++i)
+      if (order[i] != static_cast<int>(i)) return false;
+    x_at_sort_ = std::move(x_at_sort);
+    candidates_.build(grid_, x_at_sort_, reach_, std::forward<Filters>(filters)...);
+    return true;
+  }
+
+  // The positions at the last sort, for a checkpoint.
+  const std::vector<Vec2>& x_at_sort() const { return x_at_sort_; }
+
   // The squared distance particle i, now at x_i, has moved since the last sort.
   double moved2(const Vec2& x_i, long i) const { return (x_i - x_at_sort_[i]).squaredNorm(); }
   // True when a particle that moved sqrt(largest_moved2) may have a neighbour

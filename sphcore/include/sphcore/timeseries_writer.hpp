@@ -18,13 +18,23 @@ struct Column {
 class TimeSeriesWriter {
  public:
   TimeSeriesWriter(const std::string& path, std::vector<Column> columns);
+  // A resumed run's: keeps the header and the first `rows` rows of the file
+  // (those written up to its checkpoint), drops the rest, and appends. The
+  // header must name `columns`, else ConfigError.
+  struct ContinueAfter {
+    std::size_t rows;
+  };
+  TimeSeriesWriter(const std::string& path, std::vector<Column> columns, ContinueAfter kept);
   void write_row(std::span<const double> values);
   std::size_t column_count() const { return columns_.size(); }
+  // Rows written so far, the resumed run's kept ones included.
+  std::size_t rows() const { return rows_; }
 
  private:
   std::string path_;
   std::vector<Column> columns_;
   std::ofstream out_;
+  std::size_t rows_ = 0;
 };
 
 }  // namespace sph
