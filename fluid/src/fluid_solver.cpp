@@ -45,7 +45,7 @@ void FluidSolver::find_neighbours(bool sort) {
     rest_walls_out_of_reach(P, walls_in_reach_, eos_);
     ++sorts_;
   }
-  pairs_.build(candidates_, P.x, parameters_.h);
+  pairs_.build(candidates_, P.x, parameters_.h, parameters_.kernel);
 }
 
 void FluidSolver::update_pressure() {
@@ -83,13 +83,14 @@ void FluidSolver::advance_state(double dt) {
   const double moved2 = sph::parallel_max(P.size(), 0.0, [&](long i) {
     if (!P.is_water(i)) return 0.0;  // the walls do not move
     P.v[i] += half * (P.a[i] + P.external_a[i]);
-    P.x[i] += dt * P.v[i];
+    P.x[i] += dt * P.v[i] + P.shift[i];
     return (P.x[i] - x_at_sort_[i]).squaredNorm();
   });
   const double rebuild_at = sph::verlet_rebuild_distance(parameters_.h);
   find_neighbours(spray_left_ || moved2 > rebuild_at * rebuild_at);
   spray_left_ = false;
   compute_continuity_and_gradients(P, pairs_, parameters_);
+  if (parameters_.delta_plus_shifting) compute_particle_shifts(P, pairs_, parameters_);
   sph::parallel_for(P.size(), [&](long i) {
     if (P.is_water(i)) P.rho[i] += dt * P.drho[i];
   });
