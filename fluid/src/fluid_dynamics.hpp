@@ -34,9 +34,9 @@ std::vector<int> walls_in_reach(const FluidParticles& particles, const sph::Cell
 
 // delta-plus-SPH's particle shifts (particle_shifting.hpp) at the positions of
 // this step's pairs, into `shift`, for the next drift; the volumes of
-// compute_continuity_and_gradients.
+// compute_continuity_and_gradients; dt the step's.
 void compute_particle_shifts(FluidParticles& particles, const sph::NeighbourList& pairs,
-                             const FluidParameters& parameters);
+                             const FluidParameters& parameters, double dt);
 
 // The other walls (walls_in_reach in index order) as they are with no water
 // in reach: p = 0, rho0, tau = 0. Those in reach keep their values, which the

@@ -90,7 +90,7 @@ void FluidSolver::advance_state(double dt) {
   find_neighbours(spray_left_ || moved2 > rebuild_at * rebuild_at);
   spray_left_ = false;
   compute_continuity_and_gradients(P, pairs_, parameters_);
-  if (parameters_.delta_plus_shifting) compute_particle_shifts(P, pairs_, parameters_);
+  if (parameters_.delta_plus_shifting) compute_particle_shifts(P, pairs_, parameters_, dt);
   sph::parallel_for(P.size(), [&](long i) {
     if (P.is_water(i)) P.rho[i] += dt * P.drho[i];
   });

@@ -28,10 +28,10 @@ ShiftingSums shifting_sums(const FluidParticles& P, const sph::NeighbourList& pa
 // Two passes: which water is on the surface (lambda), then the shifts, which
 // need to know whether a neighbour is on it.
 void compute_particle_shifts(FluidParticles& P, const sph::NeighbourList& pairs,
-                             const FluidParameters& par) {
+                             const FluidParameters& par, double dt) {
   const long n = static_cast<long>(P.size());
   const sph::kernel::ShapedValue W_of(par.kernel, par.h);
-  const DeltaPlusShifting shifting(par.run.cfl, par.h, W_of(par.dx));
+  const DeltaPlusShifting shifting(par.c0 * dt / par.h, par.h, W_of(par.dx));
   P.shift.resize(P.size());
   P.on_surface.resize(P.size());
 #pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))

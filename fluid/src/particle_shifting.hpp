@@ -5,8 +5,11 @@
 // moved a little towards where its neighbours are sparser,
 //   delta r_i = -CFL Ma (2h)^2 sum_j [1 + R (W_ij / W(dx))^n] grad_i W_ij V_j,
 // R = 0.2, n = 4 (the paper's values; the R term pushes apart particles closer
-// than dx), CFL the run's Courant number and Ma = 0.1, the Mach number of the
-// sound speed's rule c0 = 10 U_max. The sum runs over water and walls.
+// than dx), Ma = 0.1, the Mach number of the sound speed's rule c0 = 10 U_max,
+// and CFL = c0 dt / h, the Courant number of the step taken: the paper's steps
+// are all at its CFL, ours are shorter where the acceleration limits them (an
+// impact), and a shift per step, not per unit time, would then pile up. The
+// sum runs over water and walls.
 // Near the free surface the sum would push particles out of the water, where
 // the kernel has no neighbours, so (the paper's free-surface treatment) with
 // lambda_i the smallest eigenvalue of M_i = sum_j V_j grad_i W_ij (x) (x_j - x_i)
@@ -69,9 +72,9 @@ class DeltaPlusShifting {
   static constexpr double kSurface = 0.4;    // lambda below: on the free surface
   static constexpr double kInterior = 0.75;  // lambda above: inside the water
 
-  // W_dx = W(dx, h) of the kernel the sums use.
-  DeltaPlusShifting(double cfl, double h, double W_dx)
-      : scale_(-cfl * kMach * (2.0 * h) * (2.0 * h)), inverse_W_dx_(1.0 / W_dx) {}
+  // W_dx = W(dx, h) of the kernel the sums use; c0 dt / h the step's CFL.
+  DeltaPlusShifting(double c0_dt_over_h, double h, double W_dx)
+      : scale_(-c0_dt_over_h * kMach * (2.0 * h) * (2.0 * h)), inverse_W_dx_(1.0 / W_dx) {}
 
   // 1 + R (W_ij / W(dx))^n with n = 4.
   double pair_weight(double W_ij) const {

@@ -32,7 +32,7 @@ void shifts_of(FluidParticles& P, const FluidParameters& par) {
   testing::sort_and_find_neighbours(P, par, n);
   P.volume.resize(P.size());
   for (std::size_t i = 0; i < P.size(); ++i) P.volume[i] = P.m[i] / P.rho[i];
-  compute_particle_shifts(P, n.pairs, par);
+  compute_particle_shifts(P, n.pairs, par, 0.25 * par.h / par.c0);
 }
 
 // A tank: the block's outer three columns and bottom three rows are wall, its
