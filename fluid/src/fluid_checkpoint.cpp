@@ -33,6 +33,7 @@ void FluidSolver::save(sph::Checkpoint& checkpoint) const {
   checkpoint.put("drho", P.drho);
   checkpoint.put("external_drho", P.external_drho);
   checkpoint.put("spray", P.spray);
+  checkpoint.put("shift", P.shift);
   checkpoint.put("x_at_sort", verlet_.x_at_sort());
   checkpoint.put("walls_in_reach", walls_in_reach_);
   checkpoint.put_count("sorts", sorts_);
@@ -65,6 +66,7 @@ void FluidSolver::restore(const sph::Checkpoint& checkpoint) {
   checkpoint.get("drho", P.drho);
   checkpoint.get("external_drho", P.external_drho);
   checkpoint.get("spray", P.spray);
+  checkpoint.get("shift", P.shift);
   P.sigma.resize(P.size());  // from p and tau, before the momentum pass reads it
   std::vector<sph::Vec2> x_at_sort;
   checkpoint.get("x_at_sort", x_at_sort);
@@ -84,7 +86,7 @@ void FluidSolver::restore(const sph::Checkpoint& checkpoint) {
   if (!verlet_.restore(std::move(x_at_sort), [&P](long i) { return P.is_water(i); }))
     throw std::runtime_error(checkpoint.path() +
                              ": the fluid's positions at its last sort are not in cell order");
-  pairs_.build(verlet_.candidates(), P.x, parameters_.h);
+  pairs_.build(verlet_.candidates(), P.x, parameters_.h, parameters_.kernel);
 }
 
 }  // namespace cosph::fluid

@@ -9,6 +9,7 @@
 #include "hydrostatic_density_diffusion.hpp"
 #include "sphcore/continuity_pair.hpp"
 #include "sphcore/kernel.hpp"
+#include "sphcore/kernel_shape.hpp"
 #include "sphcore/momentum_bracket.hpp"
 #include "sphcore/parallel.hpp"
 #include "sphcore/renormalisation.hpp"
@@ -61,6 +62,13 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
       const double rho_j = P.rho[j], V_j = P.volume[j];
       const Vec2 v_ij = v_i - P.v[j];
       drho_i += sph::continuity_pair(rho_i, V_j, v_ij, grad_W_ij);
+      // The Riemann problem is solved against the walls too, with their
+      // extrapolated pressure (of the last force evaluation): left out, the
+      // water by a wall would lose density to the water above it with
+      // nothing flowing back from below.
+      if (par.dissipation == Dissipation::riemann)
+        drho_i += riemann_density_dissipation_pair(rho_i, V_j, P.p[i], P.p[j], F[k], x_ij,
+                                                   inverse_rho0_c0);
       if (!P.is_water(j)) {
         wall_in_reach = true;
         continue;
@@ -74,9 +82,7 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
           diffusion_i +=
               hydrostatic_density_diffusion_pair(rho_i, rho_j, rho_hydrostatic(x_ij), F[k], V_j);
           break;
-        case Dissipation::riemann:
-          drho_i += riemann_density_dissipation_pair(rho_i, V_j, P.p[i], P.p[j], F[k], x_ij,
-                                                     inverse_rho0_c0);
+        case Dissipation::riemann:  // above, with the walls
           break;
       }
       const Vec2 Vg = V_j * grad_W_ij;
@@ -133,7 +139,7 @@ void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid,
                            const TaitEquationOfState& eos) {
   const long n = static_cast<long>(walls.size());
   const double support2 = support_squared(par);
-  const kernel::Value W_of(par.h);
+  const kernel::ShapedValue W_of(par.kernel, par.h);
 #pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
   for (long k = 0; k < n; ++k) {
     const int w = walls[k];

@@ -32,6 +32,12 @@ void compute_continuity_and_gradients(FluidParticles& particles, const sph::Neig
 std::vector<int> walls_in_reach(const FluidParticles& particles, const sph::CellGrid& grid,
                                 double reach);
 
+// delta-plus-SPH's particle shifts (particle_shifting.hpp) at the positions of
+// this step's pairs, into `shift`, for the next drift; the volumes of
+// compute_continuity_and_gradients; dt the step's.
+void compute_particle_shifts(FluidParticles& particles, const sph::NeighbourList& pairs,
+                             const FluidParameters& parameters, double dt);
+
 // The other walls (walls_in_reach in index order) as they are with no water
 // in reach: p = 0, rho0, tau = 0. Those in reach keep their values, which the
 // continuity pass reads before the new wall pressure is known.

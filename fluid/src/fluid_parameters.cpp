@@ -39,6 +39,17 @@ FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
   p.dissipation = fluid.dissipation() == "riemann"     ? Dissipation::riemann
                   : fluid.dissipation() == "fourtakas" ? Dissipation::fourtakas
                                                        : Dissipation::delta_sph;
+  require(
+      fluid.kernel().empty() || fluid.kernel() == "cubic_spline" || fluid.kernel() == "wendland_c2",
+      case_file, "fluid.kernel",
+      "unknown kernel '" + fluid.kernel() + "' (known: cubic_spline, wendland_c2)");
+  p.kernel = fluid.kernel() == "wendland_c2" ? sph::kernel::Shape::wendland_c2
+                                             : sph::kernel::Shape::cubic_spline;
+  require(
+      fluid.shifting().empty() || fluid.shifting() == "none" || fluid.shifting() == "delta_plus",
+      case_file, "fluid.shifting",
+      "unknown particle shifting '" + fluid.shifting() + "' (known: none, delta_plus)");
+  p.delta_plus_shifting = fluid.shifting() == "delta_plus";
 
   require(fluid.water_size() > 0, case_file, "fluid.water", "no water region given");
   p.water = sph::read_regions(fluid.water(), case_file, "fluid.water");

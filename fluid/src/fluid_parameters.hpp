@@ -6,6 +6,7 @@
 
 #include "dissipation.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/kernel_shape.hpp"
 #include "sphcore/run_parameters.hpp"
 #include "sphcore/shape.hpp"
 
@@ -27,6 +28,8 @@ struct FluidParameters {
 
   // Of the water's sound waves and pressure noise.
   Dissipation dissipation = Dissipation::delta_sph;
+  sph::kernel::Shape kernel = sph::kernel::Shape::cubic_spline;
+  bool delta_plus_shifting = false;  // particle_shifting.hpp
 };
 
 // Throws sph::ConfigError naming the file, field and reason for bad input.

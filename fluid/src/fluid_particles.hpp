@@ -32,6 +32,9 @@ struct FluidParticles {
   // state too, since the next step's first kick reads it, and it tells which
   // water has the solid in reach (FluidSolver::is_spray).
   std::vector<Vec2> external_a;
+  // delta-plus-SPH's particle shift (fluid.shifting), to be added at the next
+  // drift: state, since it is found from one step's pairs and used in the next.
+  std::vector<Vec2> shift;
 
   // Derived each step from the state.
   std::vector<double> p;               // pressure (walls: extrapolated from the water)
@@ -47,6 +50,9 @@ struct FluidParticles {
   // around the particle too sparse to renormalise (sph::can_renormalise).
   // FluidSolver::is_spray adds that no solid is in reach either.
   std::vector<std::uint8_t> spray;
+  // 1 for water on the free surface as particle shifting sees it
+  // (DeltaPlusShifting::on_surface).
+  std::vector<std::uint8_t> on_surface;
   // The momentum pass's shares for later blocks of particles (sph::OrderedShares).
   sph::OrderedShares<Vec2> a_shares{Vec2::Zero()};
 
@@ -83,6 +89,7 @@ struct FluidParticles {
     a.assign(n, Vec2::Zero());
     drho.assign(n, 0.0);
     external_a.assign(n, Vec2::Zero());
+    shift.assign(n, Vec2::Zero());
     external_drho.assign(n, 0.0);
     spray.assign(n, 0);
   }
@@ -91,14 +98,14 @@ struct FluidParticles {
   // grid's: new index k holds old particle order[k]. The derived fields are
   // computed again from it before anything reads them.
   void permute_state(const std::vector<int>& order) {
-    sph::permute(order, id, kind, x, v, rho, m, grad_rho, external_a);
+    sph::permute(order, id, kind, x, v, rho, m, grad_rho, external_a, shift);
   }
 
   // Keeps the particles kept[0], kept[1], ... in that order; the others leave
   // with everything known of them.
   void keep_only(const std::vector<int>& kept) {
     sph::permute(kept, id, kind, x, v, rho, m, grad_rho, p, tau, sigma, inverse_rho, grad_rho_next,
-                 volume, a, drho, external_a, external_drho, spray);
+                 volume, a, drho, external_a, shift, external_drho, spray);
   }
 };
 

@@ -43,7 +43,7 @@ void FluidSolver::find_neighbours(bool sort) {
     rest_walls_out_of_reach(P, walls_in_reach_, eos_);
     ++sorts_;
   }
-  pairs_.build(verlet_.candidates(), P.x, parameters_.h);
+  pairs_.build(verlet_.candidates(), P.x, parameters_.h, parameters_.kernel);
 }
 
 void FluidSolver::update_pressure() {
@@ -81,12 +81,13 @@ void FluidSolver::advance_state(double dt) {
   const double moved2 = sph::parallel_max(P.size(), 0.0, [&](long i) {
     if (!P.is_water(i)) return 0.0;  // the walls do not move
     P.v[i] += half * (P.a[i] + P.external_a[i]);
-    P.x[i] += dt * P.v[i];
+    P.x[i] += dt * P.v[i] + P.shift[i];
     return verlet_.moved2(P.x[i], i);
   });
   find_neighbours(spray_left_ || verlet_.stale(moved2));
   spray_left_ = false;
   compute_continuity_and_gradients(P, pairs_, parameters_);
+  if (parameters_.delta_plus_shifting) compute_particle_shifts(P, pairs_, parameters_, dt);
   sph::parallel_for(P.size(), [&](long i) {
     if (P.is_water(i)) P.rho[i] += dt * P.drho[i];
   });

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "sphcore/kernel.hpp"
+#include "sphcore/kernel_shape.hpp"
 #include "sphcore/wall_pressure.hpp"
 
 namespace cosph::fluid {
@@ -31,12 +31,13 @@ WaterGauges measure(const FluidParticles& P, const FluidParameters& par) {
 
 double probe_pressure(const FluidParticles& P, const FluidParameters& par, const Vec2& probe) {
   const double support2 = sph::kernel::kSupport * par.h * sph::kernel::kSupport * par.h;
+  const sph::kernel::ShapedValue W_of(par.kernel, par.h);
   sph::WallPressureSum sum;
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (!P.is_water(i)) continue;
     const Vec2 x_pi = probe - P.x[i];
     const double r2 = x_pi.squaredNorm();
-    if (r2 < support2) sum.add(P.p[i], P.rho[i], x_pi, sph::kernel::W(std::sqrt(r2), par.h));
+    if (r2 < support2) sum.add(P.p[i], P.rho[i], x_pi, W_of(std::sqrt(r2)));
   }
   return sum.wall_pressure(par.run.gravity);
 }

@@ -30,6 +30,7 @@
 
 #include "sphcore/cell_grid.hpp"
 #include "sphcore/kernel.hpp"
+#include "sphcore/kernel_shape.hpp"
 #include "sphcore/parallel.hpp"
 
 namespace sph {
@@ -195,19 +196,23 @@ class NeighbourList {
   // The pairs of this step from a Verlet list: its candidates within 2h of i,
   // in its order. Exactly the neighbours a grid search finds while no particle
   // has moved more than half the list's skin since it was built.
-  void build(const CandidateList& candidates, std::span<const Vec2> x, double h) {
+  // F_ij is of the kernel `shape` (kernel_shape.hpp).
+  void build(const CandidateList& candidates, std::span<const Vec2> x, double h,
+             kernel::Shape shape = kernel::Shape::cubic_spline) {
     const double support2 = (kernel::kSupport * h) * (kernel::kSupport * h);
-    const kernel::GradientFactor gradient_factor(h);
-    // About 21 neighbours at h = 1.3 dx: room for 32 avoids regrowth.
-    lists_.fill(x.size(), 32, [&](long i, Store& store) {
-      const auto c = candidates.candidates(i);
-      if (c.empty()) return;
-      store.reserve(store.size + c.size());
-      // F holds r^2 until the second loop, which vectorises.
-      double* const F = store.value.data() + store.size;
-      const std::size_t count = filter_within(c, x, x[i], support2, store.j.data() + store.size, F);
-      for (std::size_t k = 0; k < count; ++k) F[k] = gradient_factor(std::sqrt(F[k]));
-      store.size += count;
+    kernel::with_gradient_factor(shape, h, [&](const auto gradient_factor) {
+      // About 21 neighbours at h = 1.3 dx: room for 32 avoids regrowth.
+      lists_.fill(x.size(), 32, [&](long i, Store& store) {
+        const auto c = candidates.candidates(i);
+        if (c.empty()) return;
+        store.reserve(store.size + c.size());
+        // F holds r^2 until the second loop, which vectorises.
+        double* const F = store.value.data() + store.size;
+        const std::size_t count =
+            filter_within(c, x, x[i], support2, store.j.data() + store.size, F);
+        for (std::size_t k = 0; k < count; ++k) F[k] = gradient_factor(std::sqrt(F[k]));
+        store.size += count;
+      });
     });
   }
 
