@@ -405,6 +405,42 @@ TEST_F(CouplerWithDummies, ACouplerWhoseSolversNeverConnectGivesUp) {
   expect_all_gone({coupler.get()});
 }
 
+// A solid that sends no acceleration with its state still couples to the end;
+// the coupler says once that the moving wall's pressure leaves its term out.
+// The net force on the solid is in timeseries.csv, row by row the one in
+// coupling.csv.
+TEST_F(CouplerWithDummies, ASolidWithoutAccelerationCouplesWithOneWarning) {
+  const std::string warning = "sends no acceleration";
+  for (const bool sends : {true, false}) {
+    write_case(10.0);
+    auto coupler = start_coupler();
+    auto fluid = start_dummy("fluid");
+    auto solid = start_dummy("solid", {"--send-acceleration", sends ? "1" : "0"});
+    const auto deadline = Clock::now() + 15s;
+    ASSERT_EQ(coupler->wait_until(deadline), 0) << coupler->err();
+    ASSERT_EQ(fluid->wait_until(deadline), 0) << fluid->err();
+    ASSERT_EQ(solid->wait_until(deadline), 0) << solid->err();
+    const std::string log = coupler->err();
+    const auto first = log.find(warning);
+    if (sends) {
+      EXPECT_EQ(first, std::string::npos) << log;
+    } else {
+      ASSERT_NE(first, std::string::npos) << log;
+      EXPECT_EQ(log.find(warning, first + 1), std::string::npos) << "warned twice: " << log;
+    }
+    const Table series(out("timeseries.csv")), coupling(out("coupling.csv"));
+    ASSERT_TRUE(series.has("plate_force_x") && series.has("plate_force_y"));
+    ASSERT_EQ(series.rows.size(), coupling.rows.size());
+    double largest = 0.0;
+    for (std::size_t r = 0; r < series.rows.size(); ++r) {
+      EXPECT_EQ(series.at(r, "plate_force_x"), coupling.at(r, "force_on_solid_x")) << "row " << r;
+      EXPECT_EQ(series.at(r, "plate_force_y"), coupling.at(r, "force_on_solid_y")) << "row " << r;
+      largest = std::max(largest, std::abs(series.at(r, "plate_force_x")));
+    }
+    EXPECT_GT(largest, 0.0);  // the fluid's 1000 Pa pushes the solid
+  }
+}
+
 TEST_F(CouplerWithDummies, AnotherProtocolVersionIsRefused) {
   write_case(3.0);
   auto coupler = start_coupler();
