@@ -207,6 +207,7 @@ class Session {
         fail(std::string(kSideName[side]) + ": " + error.what());
       }
       messaging_seconds_ += std::chrono::duration<double>(Clock::now() - parse_start).count();
+      if (side == kSolid) warn_if_no_acceleration(peer);
       peer.bounds = cp::from_proto(peer.state.bounds());
       peer.max_h = peer.state.max_smoothing_length();
       if (!peer.state.gauges().empty()) {
@@ -222,6 +223,23 @@ class Session {
       fail("the solvers are out of step: fluid at t = " + std::to_string(t_fluid) +
            " s, solid at t = " + std::to_string(t_solid) + " s");
     return last_in;
+  }
+
+  // The moving wall's pressure takes the solid's acceleration (docs/physics.md,
+  // "Moving wall"); a solid that does not send it still couples, the term left
+  // out, and the user hears of it once.
+  void warn_if_no_acceleration(const Peer& solid) {
+    if (warned_no_acceleration_ || solid.particles.size() == 0 ||
+        solid.particles.has_acceleration() ||
+        settings_.cross_phase.model != InterfaceModel::moving_wall ||
+        !settings_.cross_phase.wall_acceleration)
+      return;
+    warned_no_acceleration_ = true;
+    std::cerr << "cosph-coupler: warning: '" << solid.solver
+              << "' sends no acceleration with its interface state (protocol version 2?): the "
+                 "moving wall's pressure leaves out the term of the wall's acceleration, "
+                 "rho (g - a_w) . r, and takes g alone"
+              << std::endl;
   }
 
   // Each state carries its solver's waits for the answers so far, the last
@@ -351,6 +369,8 @@ class Session {
     for (int side : {kFluid, kSolid})
       for (const auto& gauge : peers_[side].gauges) row.push_back(gauge.value());
     row.push_back(level_ < 0 ? 0.0 : peers_[kFluid].gauges[level_].value());
+    row.push_back(forces.force_on_solid.x());
+    row.push_back(forces.force_on_solid.y());
     timeseries_->write_row(row);
     const std::array<double, 16> coupling{t,
                                           forces.force_on_fluid.x(),
@@ -391,6 +411,10 @@ class Session {
     }
     // The water level at the left wall, the scene's name for the fluid's "height".
     columns.push_back({"level", "m"});
+    // The net force of the water on the solid (the plate of every scene here),
+    // of the states of the row: the load an engineer reads.
+    columns.push_back({"plate_force_x", "N/m"});
+    columns.push_back({"plate_force_y", "N/m"});
     columns_ = columns;
     timeseries_.emplace(settings_.out_dir + "/timeseries.csv", columns);
     coupling_.emplace(settings_.out_dir + "/coupling.csv", coupling_columns());
@@ -426,6 +450,7 @@ class Session {
   double next_checkpoint_ = settings_.run.checkpoint_interval;
   long checkpoint_step_ = -1;  // of the checkpoint resumed from
   int level_ = -1;
+  bool warned_no_acceleration_ = false;
   double next_output_ = 0.0;
   // The states in hand go into timeseries.csv: asked for with the last
   // answer (CouplingStep.report_gauges), and the first.

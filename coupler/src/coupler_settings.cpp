@@ -54,6 +54,7 @@ CrossPhaseParameters read_cross_phase_parameters(const sph::CaseFile& case_file)
   CrossPhaseParameters par;
   par.model = name == "stress_sum" ? InterfaceModel::stress_sum : InterfaceModel::moving_wall;
   par.gravity = sph::read_run_parameters(case_file).gravity;
+  par.wall_acceleration = coupling.wall_acceleration();
   const sph::ArtificialViscosityCoefficients phase =
       phase_artificial_viscosity(case_file, par.model);
   par.A = coupling.artificial_viscosity() > 0.0 ? coupling.artificial_viscosity() : phase.A;

@@ -98,10 +98,15 @@ void add_moving_wall(const sph::InterfaceParticles& F, const sph::InterfaceParti
   std::vector<sph::WallPressureSum> sums(S.size());
   for (const Pair& p : pairs)
     sums[p.s].add(-0.5 * F.sigma[p.f].trace(), F.rho[p.f], -p.x_fs, p.W_fs);
-  // The solid's own acceleration is not known here; the wall's pressure has
-  // the hydrostatic part only (a_w = 0, as for the fluid's fixed walls).
-  std::vector<double> P_w(S.size());
-  for (std::size_t s = 0; s < S.size(); ++s) P_w[s] = sums[s].wall_pressure(par.gravity);
+  // a_w: the solid's total acceleration from its last closing kick
+  // (docs/physics.md, "Moving wall"), if the case asks for it
+  // (coupling.wall_acceleration); otherwise, or when the solid does not send
+  // it, the wall is treated as fixed (a_w = 0), as the water's own walls are.
+  const bool accelerating = par.wall_acceleration && S.has_acceleration();
+  std::vector<double>& P_w = out.wall_pressure;
+  P_w.resize(S.size());
+  for (std::size_t s = 0; s < S.size(); ++s)
+    P_w[s] = sums[s].wall_pressure(accelerating ? Vec2(par.gravity - S.a[s]) : par.gravity);
 
   for (const Pair& p : pairs) {
     const double rho_f = F.rho[p.f], V_s = S.m[p.s] / S.rho[p.s];
@@ -126,7 +131,10 @@ CrossPhaseForces compute_cross_phase_forces(const sph::InterfaceParticles& F,
   CrossPhaseForces out;
   out.fluid_a.assign(F.size(), Vec2::Zero());
   out.solid_a.assign(S.size(), Vec2::Zero());
-  if (par.model == InterfaceModel::moving_wall) out.fluid_drho.assign(F.size(), 0.0);
+  if (par.model == InterfaceModel::moving_wall) {
+    out.fluid_drho.assign(F.size(), 0.0);
+    out.wall_pressure.assign(S.size(), 0.0);
+  }
   if (F.size() == 0 || S.size() == 0) return out;
 
   const std::vector<Pair> pairs = find_pairs(F, S);

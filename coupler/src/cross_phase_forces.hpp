@@ -10,7 +10,9 @@
 // moving_wall (docs/physics.md, "Moving wall"): the water sees each solid
 // particle as a moving wall particle of the solid's volume V_s = m_s / rho_s,
 // as it sees its own walls (Adami, Hu & Adams 2012): pressure P_w
-// extrapolated from the water around it (sphcore/wall_pressure.hpp), and a
+// extrapolated from the water around it with the body force g - a_w, a_w the
+// solid particle's acceleration when the solid sends it
+// (sphcore/wall_pressure.hpp), and a
 // share in the water's continuity,
 //   a_f     += V_s ( (sigma_f - P_w I) / rho_f - rho_f Pi_fs I ) . grad_f W_fs
 //   drho_f  += rho_f V_s (v_f - v_s) . grad_f W_fs.
@@ -31,15 +33,17 @@ enum class InterfaceModel { stress_sum, moving_wall };
 
 struct CrossPhaseParameters {
   InterfaceModel model = InterfaceModel::moving_wall;
-  double A = 0.02;              // Monaghan artificial viscosity, linear
-  double B = 0.0;               // and quadratic
-  Vec2 gravity = Vec2::Zero();  // moving_wall: the hydrostatic part of P_w
+  double A = 0.02;                 // Monaghan artificial viscosity, linear
+  double B = 0.0;                  // and quadratic
+  Vec2 gravity = Vec2::Zero();     // moving_wall: g in the body force g - a_w of P_w
+  bool wall_acceleration = false;  // moving_wall: a_w taken when the solid sends it
 };
 
 struct CrossPhaseForces {
-  std::vector<Vec2> fluid_a;       // per fluid interface particle
-  std::vector<Vec2> solid_a;       // per solid interface particle
-  std::vector<double> fluid_drho;  // moving_wall only (empty otherwise), kg/m^3/s
+  std::vector<Vec2> fluid_a;          // per fluid interface particle
+  std::vector<Vec2> solid_a;          // per solid interface particle
+  std::vector<double> fluid_drho;     // moving_wall only (empty otherwise), kg/m^3/s
+  std::vector<double> wall_pressure;  // moving_wall only: P_w per solid interface particle, Pa
   long pairs = 0;
   Vec2 force_on_fluid = Vec2::Zero();  // sum m a, N/m
   Vec2 force_on_solid = Vec2::Zero();

@@ -4,8 +4,10 @@
 // that carries a prescribed stress sigma = -P I and moves with a prescribed
 // velocity (V, 0), proposes a fixed step, and records in DIR/dummy_PHASE.csv
 // every step the coupler gave it and the total cross-phase force sum m a it
-// received. The fluid block lies left of x = 0, the solid block right of it,
-// so the two meet across x = 0.
+// received. As a solid it sends an acceleration (--acceleration A: (A, 0) for
+// every particle) with its state, as the solid models do, unless
+// --send-acceleration 0 (a solid that does not send it). The fluid block lies left of x = 0, the
+// solid block right of it, so the two meet across x = 0.
 //
 // --busy-ms W makes each step take W ms of "work" before the state goes out,
 // on every step or, with --busy-parity 0 or 1, on the even or odd ones only.
@@ -43,8 +45,10 @@ struct DummyOptions {
   double dt = 0.0;   // 0: 1e-3 s for the fluid, 1.5e-3 s for the solid
   double end = 1.0;  // s, for progress and snapshots only: the coupler ends the run
   double spacing = 1e-3;
-  double motion = 0.0;  // m/s, x velocity
-  double stress = -1;   // Pa, pressure P; negative: 1000 Pa for the fluid, 0 for the solid
+  double motion = 0.0;        // m/s, x velocity
+  double stress = -1;         // Pa, pressure P; negative: 1000 Pa for the fluid, 0 for the solid
+  double acceleration = 0.0;  // m/s^2, x acceleration a solid sends
+  long send_acceleration = 1;
   double timeout = cosph::coupling::kDefaultTimeoutSeconds;
   double busy_ms = 0.0;
   long busy_parity = -1;  // negative: busy on every step
@@ -55,6 +59,7 @@ struct DummyOptions {
 const char* kUsage =
     "usage: cosph-dummy --phase fluid|solid --endpoint E --out DIR [--particles N] [--dt DT]\n"
     "       [--end T] [--spacing DX] [--motion V] [--stress P] [--timeout S]\n"
+    "       [--acceleration A] [--send-acceleration 0|1]\n"
     "       [--busy-ms W] [--busy-parity 0|1]\n"
     "       [--die-at-step K] [--hang-at-step K] [--garbage-at-step K] [--version V]";
 
@@ -62,14 +67,18 @@ DummyOptions parse_options(int argc, char** argv) {
   DummyOptions o;
   const std::map<std::string, std::string*> texts{
       {"--phase", &o.phase}, {"--endpoint", &o.endpoint}, {"--out", &o.out_dir}};
-  const std::map<std::string, double*> numbers{{"--dt", &o.dt},           {"--end", &o.end},
-                                               {"--spacing", &o.spacing}, {"--motion", &o.motion},
-                                               {"--stress", &o.stress},   {"--timeout", &o.timeout},
-                                               {"--busy-ms", &o.busy_ms}};
-  const std::map<std::string, long*> integers{
-      {"--particles", &o.particles},  {"--die-at-step", &o.die_at},
-      {"--hang-at-step", &o.hang_at}, {"--garbage-at-step", &o.garbage_at},
-      {"--version", &o.version},      {"--busy-parity", &o.busy_parity}};
+  const std::map<std::string, double*> numbers{
+      {"--dt", &o.dt},           {"--end", &o.end},
+      {"--spacing", &o.spacing}, {"--motion", &o.motion},
+      {"--stress", &o.stress},   {"--timeout", &o.timeout},
+      {"--busy-ms", &o.busy_ms}, {"--acceleration", &o.acceleration}};
+  const std::map<std::string, long*> integers{{"--particles", &o.particles},
+                                              {"--die-at-step", &o.die_at},
+                                              {"--hang-at-step", &o.hang_at},
+                                              {"--garbage-at-step", &o.garbage_at},
+                                              {"--version", &o.version},
+                                              {"--busy-parity", &o.busy_parity},
+                                              {"--send-acceleration", &o.send_acceleration}};
   for (int i = 1; i < argc; i += 2) {
     const std::string option = argv[i];
     if (i + 1 >= argc) throw sph::ConfigError(option + " needs a value\n" + kUsage);
@@ -138,10 +147,15 @@ class DummySolver {
   }
   void collect_interface(const sph::Region& region, sph::InterfaceParticles& out) {
     out.clear();
+    const bool sends_acceleration = o_.phase == "solid" && o_.send_acceleration != 0;
     for (std::size_t i = 0; i < x_.size(); ++i) {
       if (!region.contains(x_[i])) continue;
-      out.add(static_cast<long>(i), x_[i], Vec2(o_.motion, 0.0), -o_.stress * Mat2::Identity(),
-              mass(), rho_, h_, 10.0);
+      const Vec2 v(o_.motion, 0.0), a(o_.acceleration, 0.0);
+      const Mat2 sigma = -o_.stress * Mat2::Identity();
+      if (sends_acceleration)
+        out.add(static_cast<long>(i), x_[i], v, a, sigma, mass(), rho_, h_, 10.0);
+      else
+        out.add(static_cast<long>(i), x_[i], v, sigma, mass(), rho_, h_, 10.0);
     }
   }
   void set_interface_accelerations(const std::vector<Vec2>& a) {

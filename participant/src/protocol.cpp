@@ -55,6 +55,8 @@ void to_proto(const sph::InterfaceParticles& P, InterfaceState& state) {
   state.mutable_density()->Assign(P.rho.begin(), P.rho.end());
   state.mutable_smoothing_length()->Assign(P.h.begin(), P.h.end());
   state.mutable_sound_speed()->Assign(P.c.begin(), P.c.end());
+  state.mutable_acceleration()->Resize(2 * static_cast<int>(P.a.size()), 0.0);
+  std::copy_n(doubles_of(P.a), 2 * P.a.size(), state.mutable_acceleration()->mutable_data());
 }
 
 sph::InterfaceParticles from_proto(const InterfaceState& state) {
@@ -72,6 +74,7 @@ sph::InterfaceParticles from_proto(const InterfaceState& state) {
   expect(state.density_size(), 1, "density");
   expect(state.smoothing_length_size(), 1, "smoothing_length");
   expect(state.sound_speed_size(), 1, "sound_speed");
+  if (state.acceleration_size() != 0) expect(state.acceleration_size(), 2, "acceleration");
   const auto count = static_cast<std::size_t>(n);
   sph::InterfaceParticles P;
   P.id.assign(state.id().begin(), state.id().end());
@@ -86,6 +89,8 @@ sph::InterfaceParticles from_proto(const InterfaceState& state) {
   P.rho.assign(state.density().begin(), state.density().end());
   P.h.assign(state.smoothing_length().begin(), state.smoothing_length().end());
   P.c.assign(state.sound_speed().begin(), state.sound_speed().end());
+  P.a.resize(static_cast<std::size_t>(state.acceleration_size() / 2));
+  std::copy_n(state.acceleration().data(), 2 * P.a.size(), doubles_of(P.a));
   for (std::size_t i = 0; i < count; ++i)
     if (!(P.m[i] > 0.0 && P.rho[i] > 0.0 && P.h[i] > 0.0))
       throw CouplingError("malformed InterfaceState: particle " + std::to_string(P.id[i]) +
@@ -94,10 +99,12 @@ sph::InterfaceParticles from_proto(const InterfaceState& state) {
 }
 
 std::string check_hello(const Hello& hello, Phase expected) {
-  if (hello.protocol_version() != kProtocolVersion)
+  if (hello.protocol_version() < kOldestProtocolVersion ||
+      hello.protocol_version() > kProtocolVersion)
     return "protocol version " + std::to_string(hello.protocol_version()) + " of '" +
            hello.solver() + "' differs from the coupler's version " +
-           std::to_string(kProtocolVersion);
+           std::to_string(kProtocolVersion) + " (it takes versions " +
+           std::to_string(kOldestProtocolVersion) + " to " + std::to_string(kProtocolVersion) + ")";
   if (hello.phase() != expected)
     return "'" + hello.solver() + "' announced phase " + phase_name(hello.phase()) +
            " where the coupler expects " + phase_name(expected);

@@ -34,12 +34,15 @@ void kick_and_drift(Particles& P, long i, double dt, const SolidParameters& para
   for (const SolidWall& wall : parameters.walls) push_out_of_wall(wall, P.x[i], P.v[i]);
 }
 
-// The closing kick, with the accelerations of the new state.
+// The closing kick, with the accelerations of the new state, which it keeps
+// in kick_a: the acceleration the coupler's moving wall takes at the next
+// exchange (docs/physics.md, "Moving wall").
 template <class Particles>
 void closing_kick(Particles& P, double dt) {
   const double half = 0.5 * dt;
   sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
-    if (!P.clamped[i]) P.v[i] += half * (P.a[i] + P.external_a[i]);
+    P.kick_a[i] = P.clamped[i] ? Vec2::Zero() : Vec2(P.a[i] + P.external_a[i]);
+    P.v[i] += half * P.kick_a[i];
   });
 }
 

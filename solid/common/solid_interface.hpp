@@ -1,6 +1,7 @@
 // The solid particles a coupled run shares with the water, and the coupler's
 // accelerations back onto them: the same for every solid model whose
-// particles carry id, x, v, sigma, m, rho and c (cosph-solid, cosph-solid-tl).
+// particles carry id, x, v, kick_a, sigma, m, rho and c (cosph-solid,
+// cosph-solid-tl).
 #pragma once
 
 #include <cstddef>
@@ -23,7 +24,7 @@ class SolidInterface {
     for (std::size_t i = 0; i < P.size(); ++i) {
       if (!region.contains(P.x[i])) continue;
       sent_.push_back(static_cast<long>(i));
-      out.add(P.id[i], P.x[i], P.v[i], P.sigma[i], P.m[i], P.rho[i], h, P.c[i]);
+      out.add(P.id[i], P.x[i], P.v[i], P.kick_a[i], P.sigma[i], P.m[i], P.rho[i], h, P.c[i]);
     }
   }
 

@@ -39,6 +39,9 @@ struct JaumannParticles {
   std::vector<std::uint8_t> inert;
   // Acceleration imposed from outside (the coupler's fluid forces); zero alone.
   std::vector<Vec2> external_a;
+  // The total acceleration of the last closing kick (own, gravity and the
+  // coupler's; zero for clamped): the moving wall's a_w sent to the coupler.
+  std::vector<Vec2> kick_a;
 
   // Derived each step from the state.
   std::vector<double> p;                           // pressure P = K (rho/rho0 - 1)
@@ -79,6 +82,7 @@ struct JaumannParticles {
     failed.push_back(0);
     inert.push_back(0);
     external_a.push_back(Vec2::Zero());
+    kick_a.push_back(Vec2::Zero());
   }
 
   // The scene's particles at rest in their reference state, derived fields sized.

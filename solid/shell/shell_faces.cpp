@@ -21,12 +21,15 @@ void ShellFaces::collect(const ShellParticles& P, const ShellSection& section, d
       const Vec2 x = P.x[i] + r;
       if (!region.contains(x)) continue;
       const Vec2 v = P.v[i] + P.omega[i] * Vec2(-r.y(), r.x());
+      // The face point turns with the section: tangential and centripetal parts.
+      const Vec2 a =
+          P.kick_a[i] + P.kick_alpha[i] * Vec2(-r.y(), r.x()) - P.omega[i] * P.omega[i] * r;
       const double z = 0.5 * side * t;
       const double sigma_11 = P.N[i] / t - z * P.M[i] / I;
       const sph::Mat2 sigma = sigma_11 * tangent * tangent.transpose();
       const double mass = 0.5 * P.m[i];
       sent_.push_back({static_cast<long>(i), r, mass});
-      out.add(2L * P.id[i] + (side > 0 ? 0 : 1), x, v, sigma, mass, section.rho, h, P.c[i]);
+      out.add(2L * P.id[i] + (side > 0 ? 0 : 1), x, v, a, sigma, mass, section.rho, h, P.c[i]);
     }
   }
 }

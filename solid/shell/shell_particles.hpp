@@ -42,6 +42,10 @@ struct ShellParticles {
   // angular accelerations.
   std::vector<Vec2> external_a;
   std::vector<double> external_alpha;
+  // The total accelerations of the last closing kick (own and imposed; zero
+  // for clamped): what the faces' accelerations sent to the coupler are made of.
+  std::vector<Vec2> kick_a;
+  std::vector<double> kick_alpha;
 
   // Derived from the state each step (shell_dynamics.hpp).
   std::vector<Vec2> dx_dS;            // the mid-line's tangent, dx/dS
@@ -65,6 +69,8 @@ struct ShellParticles {
     alpha.assign(n, 0.0);
     external_a.assign(n, Vec2::Zero());
     external_alpha.assign(n, 0.0);
+    kick_a.assign(n, Vec2::Zero());
+    kick_alpha.assign(n, 0.0);
   }
 };
 

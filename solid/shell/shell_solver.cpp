@@ -107,9 +107,10 @@ void ShellSolver::begin_step(double dt) {
 void ShellSolver::end_step(double dt) {
   ShellParticles& P = particles_;
   for (std::size_t i = 0; i < P.size(); ++i) {
-    if (P.clamped[i]) continue;
-    P.v[i] += (0.5 * dt) * (P.a[i] + P.external_a[i]);
-    P.omega[i] += (0.5 * dt) * (P.alpha[i] + P.external_alpha[i]);
+    P.kick_a[i] = P.clamped[i] ? Vec2::Zero() : Vec2(P.a[i] + P.external_a[i]);
+    P.kick_alpha[i] = P.clamped[i] ? 0.0 : P.alpha[i] + P.external_alpha[i];
+    P.v[i] += (0.5 * dt) * P.kick_a[i];
+    P.omega[i] += (0.5 * dt) * P.kick_alpha[i];
   }
   time_ += dt;
   ++steps_;

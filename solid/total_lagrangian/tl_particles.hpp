@@ -41,6 +41,9 @@ struct TLParticles {
   std::vector<Vec2> x, v;
   // Acceleration imposed from outside (the coupler's fluid forces); zero alone.
   std::vector<Vec2> external_a;
+  // The total acceleration of the last closing kick (own, gravity and the
+  // coupler's; zero for clamped): the moving wall's a_w sent to the coupler.
+  std::vector<Vec2> kick_a;
 
   // Derived from the state each step.
   std::vector<Mat2> F;                // deformation gradient
@@ -66,6 +69,7 @@ struct TLParticles {
     strain_energy.assign(n, 0.0);
     a.assign(n, Vec2::Zero());
     external_a.assign(n, Vec2::Zero());
+    kick_a.assign(n, Vec2::Zero());
   }
 };
 

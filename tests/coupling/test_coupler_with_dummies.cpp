@@ -64,12 +64,14 @@ bool contains(const std::string& text, const std::string& part) {
 
 class CouplerWithDummies : public ::testing::Test {
  protected:
-  void write_case(double timeout, int max_substeps = 0, double output_interval = 0.0005) {
+  void write_case(double timeout, int max_substeps = 0, double output_interval = 0.0005,
+                  bool wall_acceleration = false) {
     std::ostringstream text;
     text << "run { end_time: " << kEndTime << " output_interval: " << output_interval
          << " snapshot_interval: 0.02 }\n"
          << "fluid { spacing: 0.001 }\nsolid { spacing: 0.001 }\n"
-         << "coupling { timeout: " << timeout << " max_substeps: " << max_substeps << " }\n";
+         << "coupling { timeout: " << timeout << " max_substeps: " << max_substeps
+         << " wall_acceleration: " << (wall_acceleration ? "true" : "false") << " }\n";
     cosph::testing::write_text(dir_.file("case.pbtxt"), text.str());
     timeout_ = timeout;
   }
@@ -403,6 +405,42 @@ TEST_F(CouplerWithDummies, ACouplerWhoseSolversNeverConnectGivesUp) {
   EXPECT_NE(code, 0);
   EXPECT_TRUE(contains(coupler->err(), "waiting for the solvers")) << coupler->err();
   expect_all_gone({coupler.get()});
+}
+
+// A solid that sends no acceleration with its state still couples to the end;
+// the coupler says once that the moving wall's pressure leaves its term out.
+// The net force on the solid is in timeseries.csv, row by row the one in
+// coupling.csv.
+TEST_F(CouplerWithDummies, ASolidWithoutAccelerationCouplesWithOneWarning) {
+  const std::string warning = "sends no acceleration";
+  for (const bool sends : {true, false}) {
+    write_case(10.0, 0, 0.0005, /*wall_acceleration=*/true);
+    auto coupler = start_coupler();
+    auto fluid = start_dummy("fluid");
+    auto solid = start_dummy("solid", {"--send-acceleration", sends ? "1" : "0"});
+    const auto deadline = Clock::now() + 15s;
+    ASSERT_EQ(coupler->wait_until(deadline), 0) << coupler->err();
+    ASSERT_EQ(fluid->wait_until(deadline), 0) << fluid->err();
+    ASSERT_EQ(solid->wait_until(deadline), 0) << solid->err();
+    const std::string log = coupler->err();
+    const auto first = log.find(warning);
+    if (sends) {
+      EXPECT_EQ(first, std::string::npos) << log;
+    } else {
+      ASSERT_NE(first, std::string::npos) << log;
+      EXPECT_EQ(log.find(warning, first + 1), std::string::npos) << "warned twice: " << log;
+    }
+    const Table series(out("timeseries.csv")), coupling(out("coupling.csv"));
+    ASSERT_TRUE(series.has("plate_force_x") && series.has("plate_force_y"));
+    ASSERT_EQ(series.rows.size(), coupling.rows.size());
+    double largest = 0.0;
+    for (std::size_t r = 0; r < series.rows.size(); ++r) {
+      EXPECT_EQ(series.at(r, "plate_force_x"), coupling.at(r, "force_on_solid_x")) << "row " << r;
+      EXPECT_EQ(series.at(r, "plate_force_y"), coupling.at(r, "force_on_solid_y")) << "row " << r;
+      largest = std::max(largest, std::abs(series.at(r, "plate_force_x")));
+    }
+    EXPECT_GT(largest, 0.0);  // the fluid's 1000 Pa pushes the solid
+  }
 }
 
 TEST_F(CouplerWithDummies, AnotherProtocolVersionIsRefused) {

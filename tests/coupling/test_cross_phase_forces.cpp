@@ -8,6 +8,7 @@
 #include <random>
 
 #include "cross_phase_forces.hpp"
+#include "sphcore/kernel.hpp"
 
 namespace {
 
@@ -166,6 +167,55 @@ TEST(CrossPhaseForces, MovingWallCompressesTheWaterItMovesInto) {
     }
     EXPECT_NEAR(volume_rate, -direction * 0.5 * u * L, 0.03 * 0.5 * u * L);
   }
+}
+
+// Water at rest on a wall that accelerates uniformly with a, and moves the
+// water with it: in the wall's frame the water is hydrostatic under g - a, so
+// P = rho (g - a) . n d at depth d below the surface (n the wall's inward
+// normal, here -y). Adami's extrapolation recovers the pressure at the wall
+// particle, P_w = rho (g - a) . n H, to round-off (the field is linear), and
+// only with a_w: taken as a fixed wall it is off by rho a . (x_w - x_bar), x_bar
+// the kernel-weighted mean position of the water around it.
+TEST(CrossPhaseForces, AcceleratingWallGetsTheExtrapolatedPressureOfGMinusA) {
+  const double rho = 1000.0, dx = 1e-3, H = 0.02;
+  const Vec2 g(0.0, -9.81), a(1.5, 4.0), n(0.0, -1.0);
+  const double depth_gradient = rho * (g - a).dot(n);  // dP/d(depth), Pa/m
+  sph::InterfaceParticles F;
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 20; ++j) {
+      const Vec2 x((i - 9.5) * dx, (j + 0.5) * dx);
+      const double P = depth_gradient * (H - x.y());
+      F.add(20 * i + j, x, Vec2::Zero(), -P * Mat2::Identity(), rho * dx * dx, rho, 1.3 * dx, 20.0);
+    }
+  sph::InterfaceParticles S;
+  S.add(0, Vec2(0.0, 0.0), Vec2::Zero(), a, Mat2::Zero(), 1100.0 * dx * dx, 1100.0, 1.3 * dx, 50.0);
+  CrossPhaseParameters wall = kWall;
+  wall.gravity = g;
+  wall.wall_acceleration = true;
+  const double expected = depth_gradient * H;
+  const CrossPhaseForces moving = compute_cross_phase_forces(F, S, wall);
+  ASSERT_EQ(moving.wall_pressure.size(), 1u);
+  EXPECT_NEAR(moving.wall_pressure[0], expected, 1e-9 * expected);
+
+  // Without coupling.wall_acceleration the acceleration sent is not used.
+  CrossPhaseParameters without = wall;
+  without.wall_acceleration = false;
+  const double ignored = compute_cross_phase_forces(F, S, without).wall_pressure[0];
+
+  // The same wall sent without its acceleration is taken as fixed.
+  S.a.clear();
+  const CrossPhaseForces fixed = compute_cross_phase_forces(F, S, wall);
+  EXPECT_EQ(ignored, fixed.wall_pressure[0]);
+  double weight = 0.0;
+  Vec2 x_bar = Vec2::Zero();
+  for (const Vec2& x_f : F.x) {
+    const double W = sph::kernel::W(x_f.norm(), 1.3 * dx);
+    weight += W, x_bar += W * x_f;
+  }
+  x_bar /= weight;
+  const double error = rho * a.dot(S.x[0] - x_bar);  // what leaving a_w out adds
+  ASSERT_GT(std::abs(error), 1.0);                   // Pa: a real difference
+  EXPECT_NEAR(fixed.wall_pressure[0] - error, expected, 1e-6 * expected);
 }
 
 // The study's rule has no share in the continuity: nothing is sent.

@@ -60,6 +60,34 @@ TEST(Protocol, InterfaceStateRoundTripsThroughBytes) {
   }
 }
 
+// Protocol version 3: a solid's acceleration travels with its state, one per
+// particle; a state without it (a fluid, a version-2 solid) parses with none,
+// and a partial array is refused naming the field.
+TEST(Protocol, AccelerationRoundTripsOrIsAbsent) {
+  sph::InterfaceParticles solid;
+  for (int i = 0; i < 4; ++i)
+    solid.add(i, Vec2(i, 0.0), Vec2::Zero(), Vec2(0.5 * i, -9.81 - i), Mat2::Zero(), 1.0, 1.0, 1.0,
+              1.0);
+  cp::Envelope envelope;
+  cp::to_proto(solid, *envelope.mutable_state());
+  ASSERT_EQ(envelope.state().acceleration_size(), 8);
+  const sph::InterfaceParticles parsed =
+      cp::from_proto(cp::parse(cp::serialise(envelope), "the test").state());
+  ASSERT_TRUE(parsed.has_acceleration());
+  for (std::size_t i = 0; i < solid.size(); ++i) EXPECT_EQ(parsed.a[i], solid.a[i]);
+
+  cp::InterfaceState without;
+  cp::to_proto(random_particles(5), without);
+  EXPECT_EQ(without.acceleration_size(), 0);
+  const sph::InterfaceParticles none = cp::from_proto(without);
+  EXPECT_EQ(none.size(), 5u);
+  EXPECT_FALSE(none.has_acceleration());
+
+  envelope.mutable_state()->mutable_acceleration()->RemoveLast();
+  const std::string message = error_of([&] { cp::from_proto(envelope.state()); });
+  EXPECT_NE(message.find("acceleration"), std::string::npos) << message;
+}
+
 TEST(Protocol, StressTravelsAsXxXyYxYy) {
   sph::InterfaceParticles P;
   Mat2 sigma;
@@ -152,6 +180,17 @@ cp::Hello good_hello(cp::Phase phase) {
 TEST(Protocol, CheckHelloAcceptsTheRightVersionAndPhase) {
   EXPECT_EQ(cp::check_hello(good_hello(cp::FLUID), cp::FLUID), "");
   EXPECT_EQ(cp::check_hello(good_hello(cp::SOLID), cp::SOLID), "");
+}
+
+// Version 2 lacks only the acceleration, which the coupler can do without.
+TEST(Protocol, CheckHelloAcceptsTheOldestVersionAndNoOlder) {
+  cp::Hello hello = good_hello(cp::SOLID);
+  hello.set_protocol_version(cp::kOldestProtocolVersion);
+  EXPECT_EQ(cp::check_hello(hello, cp::SOLID), "");
+  hello.set_protocol_version(cp::kOldestProtocolVersion - 1);
+  EXPECT_NE(cp::check_hello(hello, cp::SOLID), "");
+  hello.set_protocol_version(cp::kProtocolVersion + 1);
+  EXPECT_NE(cp::check_hello(hello, cp::SOLID), "");
 }
 
 TEST(Protocol, CheckHelloRefusesAnotherVersionNamingBoth) {

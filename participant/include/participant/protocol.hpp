@@ -17,7 +17,10 @@
 
 namespace cosph::coupling {
 
-inline constexpr unsigned kProtocolVersion = 2;
+inline constexpr unsigned kProtocolVersion = 3;
+// Version 3 added InterfaceState.acceleration, which a version-2 peer leaves
+// empty: the coupler still takes it, and leaves that term out.
+inline constexpr unsigned kOldestProtocolVersion = 2;
 
 // A peer misbehaved, vanished or refused us: the message is ready for a user.
 class CouplingError : public std::runtime_error {
@@ -35,11 +38,13 @@ sph::Region from_proto(const Region& region);
 using sph::doubles_of;
 
 void to_proto(const sph::InterfaceParticles& particles, InterfaceState& state);
-// Throws CouplingError if the arrays do not have one entry per particle.
+// Throws CouplingError if the arrays do not have one entry per particle
+// (acceleration: one per particle, or none).
 sph::InterfaceParticles from_proto(const InterfaceState& state);
 
-// Empty if the Hello is acceptable for a peer of the expected phase, else the
-// reason, naming what differs.
+// Empty if the Hello is acceptable (a protocol version from
+// kOldestProtocolVersion to kProtocolVersion) for a peer of the expected
+// phase, else the reason, naming what differs.
 std::string check_hello(const Hello& hello, Phase expected);
 
 // Every step the coupler builds and frees messages of some 100 kB. Above

@@ -16,15 +16,19 @@ struct InterfaceParticles {
   std::vector<Vec2> x, v;
   std::vector<Mat2> sigma;  // full stress tensor, tension positive
   std::vector<double> m, rho, h, c;
+  // A solid's total acceleration at each particle, from its last closing kick
+  // (the moving wall's a_w); empty from a solver that does not send it.
+  std::vector<Vec2> a;
 
   std::size_t size() const { return x.size(); }
   void reserve(std::size_t n) {
     id.reserve(n), x.reserve(n), v.reserve(n), sigma.reserve(n);
     m.reserve(n), rho.reserve(n), h.reserve(n), c.reserve(n);
   }
+  bool has_acceleration() const { return !x.empty() && a.size() == x.size(); }
   void clear() {
     id.clear(), x.clear(), v.clear(), sigma.clear();
-    m.clear(), rho.clear(), h.clear(), c.clear();
+    m.clear(), rho.clear(), h.clear(), c.clear(), a.clear();
   }
   void add(long particle_id, const Vec2& position, const Vec2& velocity, const Mat2& stress,
            double mass, double density, double smoothing_length, double sound_speed) {
@@ -36,6 +40,13 @@ struct InterfaceParticles {
     rho.push_back(density);
     h.push_back(smoothing_length);
     c.push_back(sound_speed);
+  }
+  // As add, for a solver that sends its acceleration: every particle or none.
+  void add(long particle_id, const Vec2& position, const Vec2& velocity, const Vec2& acceleration,
+           const Mat2& stress, double mass, double density, double smoothing_length,
+           double sound_speed) {
+    add(particle_id, position, velocity, stress, mass, density, smoothing_length, sound_speed);
+    a.push_back(acceleration);
   }
 };
 
