@@ -21,11 +21,6 @@ const SolidParameters& checked(const sph::CaseFile& case_file, const SolidParame
   return parameters;
 }
 
-double hourglass_alpha(const sph::CaseFile& case_file) {
-  const auto& solid = case_file.config.solid();
-  return solid.has_hourglass_control() ? solid.hourglass_control() : kDefaultShellHourglassControl;
-}
-
 // The end particle farther from every clamped particle (the last one when
 // nothing is clamped).
 std::optional<EndLoad> read_end_load(const sph::CaseFile& case_file, const ShellParticles& P) {
@@ -56,7 +51,7 @@ ShellSolver::ShellSolver(const sph::CaseFile& case_file, const SolidParameters& 
     : parameters_(checked(case_file, parameters)),
       line_(read_shell_line(case_file, parameters.dx)),
       forces_{ShellSection::of(line_.thickness, parameters.rho0, parameters.E, parameters.nu),
-              line_.phi0(), hourglass_alpha(case_file), line_.ds},
+              line_.phi0()},
       particles_(build_shell(case_file, parameters, line_, forces_.section)),
       end_load_(read_end_load(case_file, particles_)) {
   if (parameters_.tip_gauge)
@@ -67,7 +62,7 @@ ShellSolver::ShellSolver(const sph::CaseFile& case_file, const SolidParameters& 
 void ShellSolver::update() {
   ShellParticles& P = particles_;
   compute_strains(P, forces_);
-  compute_accelerations(P, forces_);
+  compute_accelerations(P);
   // The end particle sits on the free end: the load acts on it.
   if (end_load_ && !P.clamped[end_load_->particle])
     P.a[end_load_->particle] += end_load_->at(time_) / P.m[end_load_->particle];
@@ -140,9 +135,12 @@ std::vector<sph::Gauge> ShellSolver::gauge_values() const {
   for (std::size_t i = 0; i < P.size(); ++i) {
     g.kinetic_energy += 0.5 * (P.m[i] * P.v[i].squaredNorm() + P.J[i] * P.omega[i] * P.omega[i]);
     g.max_speed = std::max(g.max_speed, P.v[i].norm());
-    g.elastic_energy += P.V[i] * P.strain_energy[i];
+  }
+  const ShellStressPoints& s = P.stress;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    g.elastic_energy += s.ds[k] * s.strain_energy[k];
     // The outer fibres' axial stress, uniaxial in the section's plane.
-    const double fibre = std::abs(P.N[i]) / t + 6.0 * std::abs(P.M[i]) / (t * t);
+    const double fibre = std::abs(s.N[k]) / t + 6.0 * std::abs(s.M[k]) / (t * t);
     g.max_von_mises =
         std::max(g.max_von_mises, sph::von_mises(sph::Mat2{{fibre, 0.0}, {0.0, 0.0}}));
   }
@@ -156,15 +154,22 @@ std::vector<sph::Gauge> ShellSolver::gauge_values() const {
 
 void ShellSolver::check_state() const {
   const ShellParticles& P = particles_;
+  // The largest axial strain of a particle's stress points.
+  std::vector<double> strain(P.size(), 0.0);
+  for (std::size_t k = 0; k < P.stress.size(); ++k) {
+    const std::size_t i = static_cast<std::size_t>(P.stress.i[k]);
+    const double eps = std::abs(P.stress.N[k] / forces_.section.EA());
+    strain[i] = std::max(strain[i], eps);
+    strain[i + 1] = std::max(strain[i + 1], eps);
+  }
   for (std::size_t i = 0; i < P.size(); ++i) {
-    const double eps = P.N[i] / forces_.section.EA();
     const char* reason = nullptr;
     if (!P.x[i].allFinite() || !P.v[i].allFinite() || !std::isfinite(P.theta[i]) ||
         !std::isfinite(P.omega[i]))
       reason = "its state is not finite";
     else if (P.v[i].norm() > P.c[i])
       reason = "it moves faster than the shell's axial sound speed";
-    else if (!(std::abs(eps) < 0.5))
+    else if (!(strain[i] < 0.5))
       reason = "its axial strain left (-0.5, 0.5) (far outside the linear law)";
     if (reason == nullptr) continue;
     std::ostringstream message;

@@ -4,8 +4,8 @@
 // particle across bends with the exact stiffness EI of the section. In 2-D
 // the shell is Reissner's geometrically exact (Timoshenko) beam in plane
 // strain (reissner_beam.hpp, shell_section.hpp), in total-Lagrangian SPH along
-// the reference line (shell_dynamics.hpp) with hourglass control
-// (line_hourglass.hpp): Wu, Zhang & Hu 2024 (J. Comput. Phys. 113113)
+// the reference line with its strains at stress points between neighbours
+// (shell_dynamics.hpp): Wu, Zhang & Hu 2024 (J. Comput. Phys. 113113)
 // reduced to a line. The water sees both faces (shell_faces.hpp).
 //
 // Step from t to t + dt, kick-drift-kick on position and rotation alike:
@@ -35,12 +35,6 @@
 #include "sphcore/time_step.hpp"
 
 namespace cosph::solid::shell {
-
-// Default of solid.hourglass_control for the shell: the control's stiffness
-// of a neighbour pair is then the field's own (GA for the position, EI for
-// the rotation) over the pair's distance squared, kernel-weighted. Chosen by
-// that rule, not fitted; docs/results/shell.md gives the period with it off.
-inline constexpr double kDefaultShellHourglassControl = 1.0;
 
 // A dead load on the free end's face (solid.end_load).
 struct EndLoad {
