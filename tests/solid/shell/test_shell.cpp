@@ -4,9 +4,11 @@
 // particles along.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bending_mode.hpp"
@@ -218,6 +220,72 @@ TEST(Shell, AntociPlatePeriodAtEightParticles) {
   ASSERT_GE(downward.size(), 2u);
   const double measured = downward[1] - downward[0];
   EXPECT_NEAR(measured / T - 1.0, 0.0, kPeriodTolerance) << "period " << measured << " s";
+}
+
+// The elastica of a cantilever under a dead end load P, L = 1: with psi the
+// downward slope, psi'' = -alpha cos psi, psi(0) = 0, psi'(1) = 0 (no moment
+// at the free end), alpha = P L^2 / EI. Shooting on psi'(0) in [0, alpha] with
+// RK4; returns the tip's deflection / L and rotation (Bisshopp & Drucker 1945
+// solve the same problem with elliptic integrals).
+std::pair<double, double> elastica_tip(double alpha) {
+  constexpr int kSteps = 2000;
+  auto shoot = [&](double slope0, double& deflection) {
+    // State (psi, psi', y); y' = sin psi.
+    std::array<double, 3> y{0.0, slope0, 0.0};
+    auto rhs = [&](const std::array<double, 3>& q) {
+      return std::array<double, 3>{q[1], -alpha * std::cos(q[0]), std::sin(q[0])};
+    };
+    const double h = 1.0 / kSteps;
+    for (int k = 0; k < kSteps; ++k) {
+      auto add = [&](const std::array<double, 3>& a, const std::array<double, 3>& b, double f) {
+        return std::array<double, 3>{a[0] + f * b[0], a[1] + f * b[1], a[2] + f * b[2]};
+      };
+      const auto k1 = rhs(y), k2 = rhs(add(y, k1, h / 2)), k3 = rhs(add(y, k2, h / 2)),
+                 k4 = rhs(add(y, k3, h));
+      for (int c = 0; c < 3; ++c) y[c] += h / 6 * (k1[c] + 2 * k2[c] + 2 * k3[c] + k4[c]);
+    }
+    deflection = y[2];
+    return std::pair{y[1], y[0]};  // psi'(1), psi(1)
+  };
+  double low = 0.0, high = alpha, deflection = 0.0, rotation = 0.0;
+  for (int k = 0; k < 60; ++k) {
+    const double middle = 0.5 * (low + high);
+    const auto [end_slope, end_angle] = shoot(middle, deflection);
+    rotation = end_angle;
+    (end_slope < 0.0 ? low : high) = middle;
+  }
+  return {deflection, rotation};
+}
+
+// The elastica at alpha = 2 (tip rotation 45 degrees), 8 particles along
+// (cases/shell_elastica.pbtxt): the target is 2 %.
+TEST(Shell, CantileverUnderALargeEndLoadFollowsTheElastica) {
+  const double L = 0.15, alpha = 2.0, end = 1.6, average = 0.5;  // m, -, s, s
+  const double dx = L / 8;
+  const sph::CaseFile case_file =
+      sph::load_case(std::string(COSPH_SOURCE_DIR) + "/cases/shell_elastica.pbtxt");
+  sph::CaseFile coarse = case_file;
+  auto& solid = *coarse.config.mutable_solid();
+  solid.set_spacing(dx);
+  solid.mutable_body(0)->mutable_min()->set_x(-4 * dx);
+  solid.mutable_clamp(0)->mutable_min()->set_x(-4 * dx);
+  ShellSolver solver(coarse, read_solid_parameters(coarse));
+  const double EI = solver.force_parameters().section.EI();
+  solid.mutable_end_load()->mutable_force()->set_y(-alpha * EI / (L * L));
+  solver = ShellSolver(coarse, read_solid_parameters(coarse));
+  const std::size_t tip = solver.particles().size() - 1;
+  double deflection = 0.0, rotation = 0.0, samples = 0.0;
+  while (solver.time() < end) {
+    const double dt = solver.step_limits().smallest();
+    solver.step(dt);
+    if (solver.time() < end - average) continue;
+    deflection += dt * (solver.particles().X[tip].y() - solver.particles().x[tip].y());
+    rotation += dt * -solver.particles().theta[tip];
+    samples += dt;
+  }
+  const auto [exact_deflection, exact_rotation] = elastica_tip(alpha);
+  EXPECT_NEAR(deflection / samples / L / exact_deflection, 1.0, 0.02);
+  EXPECT_NEAR(rotation / samples / exact_rotation, 1.0, 0.02);
 }
 
 }  // namespace
