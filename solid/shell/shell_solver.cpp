@@ -109,7 +109,8 @@ void ShellSolver::end_step(double dt) {
 }
 
 void ShellSolver::collect_interface(const sph::Region& region, sph::InterfaceParticles& out) {
-  faces_.collect(particles_, forces_.section, forces_.phi0, parameters_.h, region, out);
+  faces_.collect(particles_, forces_.section, forces_.phi0, parameters_.h, parameters_.dx, region,
+                 out);
 }
 
 void ShellSolver::set_interface_accelerations(const std::vector<Vec2>& accelerations) {
@@ -187,6 +188,7 @@ sph::Snapshot ShellSolver::snapshot() const {
   std::vector<double> density(P.size(), forces_.section.rho);
   sph::Snapshot snapshot(P.x);
   snapshot.add_scalar("id", P.id);
+  snapshot.add_scalar("mass", P.m);  // half at the ends: the mid-line's lumped masses
   snapshot.add_vector("velocity", P.v);
   snapshot.add_scalar("density", density);
   snapshot.add_scalar("rotation", P.theta);

@@ -96,6 +96,8 @@ TEST(Shell, FacesLieOnBothSurfacesAndMoveWithTheSection) {
     EXPECT_LT((out.x[k] - (P.x[i] + r)).norm(), 1e-15);
     EXPECT_LT((out.v[k] - (P.v[i] + 3.0 * Vec2(-r.y(), r.x()))).norm(), 1e-14);
     EXPECT_NEAR(out.m[k], 0.5 * P.m[i], 1e-15);
+    // The water sees one layer of wall particles at the solid's spacing.
+    EXPECT_NEAR(out.m[k] / out.rho[k], P.V[i] * solver.parameters().dx, 1e-15);
   }
 }
 
