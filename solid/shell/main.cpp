@@ -21,8 +21,7 @@ int main(int argc, char** argv) {
             std::ostringstream summary;
             summary << "shell: thickness " << section.thickness << " m, " << solver.line().count
                     << " particles along at ds = " << solver.line().ds
-                    << " m, axial c = " << section.sound_speed() << " m/s, hourglass alpha "
-                    << solver.force_parameters().hourglass_alpha;
+                    << " m, axial c = " << section.sound_speed() << " m/s";
             return summary.str();
           },
       .unused_settings =
@@ -37,6 +36,10 @@ int main(int argc, char** argv) {
               notes.push_back(
                   "solid.artificial_viscosity is not used: the shell has no viscosity of its own");
             if (!solid.walls().empty()) notes.push_back("solid.walls are not met by the shell");
+            if (solid.has_hourglass_control())
+              notes.push_back(
+                  "solid.hourglass_control is not used: the shell's stress points leave no "
+                  "zero-energy mode");
             return notes;
           }};
   return cosph::solid::run_solid_program(argc, argv, program);

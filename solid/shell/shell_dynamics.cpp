@@ -1,52 +1,62 @@
 #include "shell_dynamics.hpp"
 
+#include <algorithm>
 #include <vector>
 
-#include "line_hourglass.hpp"
 #include "reissner_beam.hpp"
 
 namespace cosph::solid::shell {
 
 void compute_strains(ShellParticles& P, const ShellForceParameters& parameters) {
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    Vec2 dx_dS = Vec2::Zero();
-    double kappa = 0.0;
-    for (const LineNeighbour& b : P.neighbours[i]) {
-      dx_dS += (P.x[b.j] - P.x[i]) * b.G;
-      kappa += (P.theta[b.j] - P.theta[i]) * b.G;
-    }
-    // A clamp's inner particle has no neighbours: it stays as built, unstrained.
-    if (P.neighbours[i].empty()) dx_dS = DirectorFrame::at(parameters.phi0).t;
-    P.dx_dS[i] = dx_dS;
-    P.kappa[i] = kappa;
-    const BeamResultants r =
-        beam_resultants(dx_dS, parameters.phi0 + P.theta[i], kappa, parameters.section);
-    P.N[i] = r.N;
-    P.Q[i] = r.Q;
-    P.M[i] = r.M;
-    P.strain_energy[i] = r.strain_energy;
+  ShellStressPoints& s = P.stress;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const std::size_t i = static_cast<std::size_t>(s.i[k]), j = i + 1;
+    s.dx_dS[k] = (P.x[j] - P.x[i]) / s.ds[k];
+    s.kappa[k] = (P.theta[j] - P.theta[i]) / s.ds[k];
+    const double phi = parameters.phi0 + 0.5 * (P.theta[i] + P.theta[j]);
+    const BeamResultants r = beam_resultants(s.dx_dS[k], phi, s.kappa[k], parameters.section);
+    s.N[k] = r.N;
+    s.Q[k] = r.Q;
+    s.M[k] = r.M;
+    s.n[k] = r.n;
+    s.couple[k] = r.couple;
+    s.strain_energy[k] = r.strain_energy;
   }
+  // The particles' resultants (for the faces, the gauges and the snapshots).
+  std::vector<int> count(P.size(), 0);
+  std::fill(P.N.begin(), P.N.end(), 0.0);
+  std::fill(P.Q.begin(), P.Q.end(), 0.0);
+  std::fill(P.M.begin(), P.M.end(), 0.0);
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const std::size_t i = static_cast<std::size_t>(s.i[k]);
+    for (const std::size_t p : {i, i + 1}) {
+      P.N[p] += s.N[k];
+      P.Q[p] += s.Q[k];
+      P.M[p] += s.M[k];
+      ++count[p];
+    }
+  }
+  for (std::size_t p = 0; p < P.size(); ++p)
+    if (count[p] > 1) {
+      P.N[p] /= count[p];
+      P.Q[p] /= count[p];
+      P.M[p] /= count[p];
+    }
 }
 
-void compute_accelerations(ShellParticles& P, const ShellForceParameters& parameters) {
+void compute_accelerations(ShellParticles& P) {
+  const ShellStressPoints& s = P.stress;
   const std::size_t n = P.size();
   std::vector<Vec2> force(n, Vec2::Zero());
   std::vector<double> moment(n, 0.0);
-  for (std::size_t i = 0; i < n; ++i) {
-    const BeamResultants r =
-        beam_resultants(P.dx_dS[i], parameters.phi0 + P.theta[i], P.kappa[i], parameters.section);
-    moment[i] += P.V[i] * r.couple;
-    for (const LineNeighbour& b : P.neighbours[i]) {
-      const Vec2 f = P.V[i] * b.G * r.n;
-      const double m = P.V[i] * b.G * r.M;
-      force[i] += f;
-      force[b.j] -= f;
-      moment[i] += m;
-      moment[b.j] -= m;
-    }
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    const std::size_t i = static_cast<std::size_t>(s.i[k]), j = i + 1;
+    const double turning = 0.5 * s.ds[k] * s.couple[k];
+    force[i] += s.n[k];
+    force[j] -= s.n[k];
+    moment[i] += s.M[k] + turning;
+    moment[j] += -s.M[k] + turning;
   }
-  add_hourglass_control(P, parameters.section, parameters.hourglass_alpha, parameters.ds, force,
-                        moment);
   for (std::size_t i = 0; i < n; ++i) {
     P.a[i] = P.clamped[i] ? Vec2::Zero() : Vec2(force[i] / P.m[i]);
     P.alpha[i] = P.clamped[i] ? 0.0 : moment[i] / P.J[i];

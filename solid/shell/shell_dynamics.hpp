@@ -1,15 +1,26 @@
-// The shell's forces: Reissner's beam (reissner_beam.hpp) discretised in
-// total-Lagrangian SPH along the reference line. With the corrected gradient
-// weights G_ij of shell_line.hpp,
-//   x'_i = sum_j (x_j - x_i) G_ij,   kappa_i = sum_j (theta_j - theta_i) G_ij,
-// the resultants n_i, M_i follow pointwise, and the forces are the exact
-// derivatives of the discrete strain energy U = sum_i V_i w_i:
-//   m_i dv_i/dt     = sum_j (V_i n_i G_ij - V_j n_j G_ji) + f_ext
-//   J_i domega_i/dt = sum_j (V_i M_i G_ij - V_j M_j G_ji) + V_i x'_i x n_i + m_ext
-// (the total-Lagrangian SPH of Bonet & Lok 1999 / Vignjevic et al. 2006,
-// reduced to a line as in Wu, Zhang & Hu 2024). Pairwise the sums are equal
-// and opposite, so linear momentum is kept; with the hourglass control
-// (line_hourglass.hpp) and kick-drift-kick the scheme is symplectic.
+// The shell's forces: Reissner's beam (reissner_beam.hpp) in total-Lagrangian
+// SPH along the reference line, with its strains taken at stress points
+// midway between neighbouring particles (Dyka & Ingel 1995, Comput. Struct.
+// 57; Randles & Libersky 2000, IJNME 48). At the stress point s between
+// particles i and j = i + 1, ds apart, the corrected SPH gradient over the
+// two particles its kernel reaches, and their mean, give
+//   x'_s = (x_j - x_i) / ds,  kappa_s = (theta_j - theta_i) / ds,
+//   phi_s = phi0 + (theta_i + theta_j) / 2,
+// and the resultants n_s, M_s follow pointwise. The forces are the exact
+// derivatives of the discrete strain energy U = sum_s ds w_s:
+//   f_i += n_s,  f_j -= n_s,
+//   m_i += M_s + ds/2 x'_s x n_s,  m_j += -M_s + ds/2 x'_s x n_s.
+// Equal and opposite in each pair: momentum is kept; with kick-drift-kick the
+// scheme is symplectic. In the linear limit this is the two-node Timoshenko
+// element with one-point (reduced) integration, free of shear locking.
+//
+// Zero-energy modes: the particle-centred SPH gradient of a line takes its
+// differences over +-1 and +-2 spacings and does not see a zigzag
+// (x_j = x_i + (-1)^j u); its near-zero-energy modes soften a clamped plate
+// at first order in ds, and a pair (hourglass) control stiff enough to stop
+// them stiffens the smooth modes too. Between neighbours a zigzag strains
+// every stress point: the stress points are the zero-energy-mode control, and
+// the scheme has no other.
 #pragma once
 
 #include "shell_particles.hpp"
@@ -19,15 +30,14 @@ namespace cosph::solid::shell {
 
 struct ShellForceParameters {
   ShellSection section;
-  double phi0;             // reference angle of the line's tangent
-  double hourglass_alpha;  // line_hourglass.hpp; 0: none
-  double ds;               // the particles' spacing along the line
+  double phi0;  // reference angle of the line's tangent
 };
 
-// x', kappa, N, Q, M and the strain energy of every particle.
+// x', kappa, N, Q, M and the strain energy at every stress point, and each
+// particle's N, Q, M (the mean of its stress points').
 void compute_strains(ShellParticles& P, const ShellForceParameters& parameters);
 
 // a and alpha from the strains (compute_strains first); zero for clamped.
-void compute_accelerations(ShellParticles& P, const ShellForceParameters& parameters);
+void compute_accelerations(ShellParticles& P);
 
 }  // namespace cosph::solid::shell

@@ -9,7 +9,8 @@ Vec2 ShellFaces::offset(const ShellSection& section, double phi, int side) {
 }
 
 void ShellFaces::collect(const ShellParticles& P, const ShellSection& section, double phi0,
-                         double h, const sph::Region& region, sph::InterfaceParticles& out) {
+                         double h, double dx, const sph::Region& region,
+                         sph::InterfaceParticles& out) {
   out.clear();
   sent_.clear();
   const double t = section.thickness, I = t * t * t / 12.0;
@@ -27,9 +28,9 @@ void ShellFaces::collect(const ShellParticles& P, const ShellSection& section, d
       const double z = 0.5 * side * t;
       const double sigma_11 = P.N[i] / t - z * P.M[i] / I;
       const sph::Mat2 sigma = sigma_11 * tangent * tangent.transpose();
-      const double mass = 0.5 * P.m[i];
+      const double mass = 0.5 * P.m[i], volume = P.V[i] * dx;
       sent_.push_back({static_cast<long>(i), r, mass});
-      out.add(2L * P.id[i] + (side > 0 ? 0 : 1), x, v, a, sigma, mass, section.rho, h, P.c[i]);
+      out.add(2L * P.id[i] + (side > 0 ? 0 : 1), x, v, a, sigma, mass, mass / volume, h, P.c[i]);
     }
   }
 }

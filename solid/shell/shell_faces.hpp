@@ -3,9 +3,13 @@
 //   x_f = x_i + r_f,   r_f = +-(t/2) d_i   (d_i the current director)
 // moving with the section as a rigid body,
 //   v_f = v_i + omega_i e_z x r_f,
-// each carrying half the particle's mass and volume (m_i / 2 at density rho,
-// so V_f = t ds / 2: the two faces together present the plate's own mass and
-// volume), the smoothing length h and the axial sound speed. Its stress is
+// each carrying half the particle's mass m_i / 2, the smoothing length h and
+// the axial sound speed, and the volume of one layer of wall particles at the
+// solid's spacing dx, V_f = V_i dx (V_i the particle's length of line; the
+// density sent is m_f / V_f). The water sees a solid as wall particles of
+// their volume (coupler/src/cross_phase_forces.hpp, moving_wall): a face
+// standing for the half-thickness, V_f = V_i t / 2, pushed the water with
+// about t / (2 dx) times the pressure's force, twice it at t = 4 dx. Its stress is
 // that of the face's fibre, sigma = sigma_11 t (x) t with
 //   sigma_11 = N / t - z M / I,  z = +-t/2 along d
 // (zero shear and zero normal stress: a free face's; the coupler's default
@@ -29,7 +33,7 @@ class ShellFaces {
  public:
   // The face particles inside `region`, on clamped particles too.
   void collect(const ShellParticles& P, const ShellSection& section, double phi0, double h,
-               const sph::Region& region, sph::InterfaceParticles& out);
+               double dx, const sph::Region& region, sph::InterfaceParticles& out);
 
   // The coupler's accelerations, in the order of the last collect, as linear
   // and angular accelerations of the mid-line particles (external_a,

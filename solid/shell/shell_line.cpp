@@ -6,7 +6,6 @@
 #include <string>
 
 #include "bending_mode.hpp"
-#include "line_kernel.hpp"
 
 namespace cosph::solid::shell {
 
@@ -92,53 +91,10 @@ ShellParticles build_shell(const sph::CaseFile& case_file, const SolidParameters
     P.omega.push_back(0.0);
   }
   P.resize_derived();
-  find_line_neighbours(P, parameters.h);
+  for (int k = 0; k + 1 < line.count; ++k)
+    if (!P.clamped[static_cast<std::size_t>(k)] || !P.clamped[static_cast<std::size_t>(k + 1)])
+      P.stress.add(k, line.ds);
   return P;
-}
-
-namespace {
-
-// Free particles and the clamps' faces: those whose strains count.
-std::vector<bool> strained_particles(const ShellParticles& P) {
-  const std::size_t n = P.size();
-  std::vector<bool> strained(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    bool next_to_free = false;
-    for (std::size_t j = 0; j < n; ++j)
-      if (!P.clamped[j] && std::abs(P.S[j] - P.S[i]) < 1.5 * std::max(P.V[i], P.V[j]))
-        next_to_free = true;
-    strained[i] = !P.clamped[i] || next_to_free;
-  }
-  return strained;
-}
-
-}  // namespace
-
-void find_line_neighbours(ShellParticles& P, double h) {
-  const double reach = sph::kernel::kSupport * h;
-  const std::size_t n = P.size();
-  const std::vector<bool> strained = strained_particles(P);
-  P.neighbours.assign(n, {});
-  for (std::size_t i = 0; i < n; ++i) {
-    if (!strained[i]) continue;
-    // Moments m_k = sum_j w_ij S_ij^k of the kernel weights w_ij = V_j W_ij.
-    double m2 = 0.0, m3 = 0.0, m4 = 0.0;
-    for (std::size_t j = 0; j < n; ++j) {
-      const double S_ij = P.S[j] - P.S[i], r = std::abs(S_ij);
-      if (j == i || r >= reach || !strained[j]) continue;
-      const double W = line_W(r, h), w = P.V[j] * W;
-      P.neighbours[i].push_back({static_cast<int>(j), S_ij, W, w});
-      m2 += w * S_ij * S_ij;
-      m3 += w * S_ij * S_ij * S_ij;
-      m4 += w * S_ij * S_ij * S_ij * S_ij;
-    }
-    // The least-squares fit f_j - f_i = g S_ij + c S_ij^2 / 2 over the
-    // neighbours: g = sum_j G_ij (f_j - f_i), G_ij = w_ij (A S_ij + B S_ij^2).
-    const double det = m2 * m4 / 4.0 - m3 * m3 / 4.0;
-    const bool fits = det > 1e-12 * m2 * m4;  // two neighbours or more, not all on one point
-    const double A = fits ? (m4 / 4.0) / det : 0.0, B = fits ? -(m3 / 2.0) / det / 2.0 : 0.0;
-    for (LineNeighbour& b : P.neighbours[i]) b.G *= A * b.S_ij + B * b.S_ij * b.S_ij;
-  }
 }
 
 }  // namespace cosph::solid::shell

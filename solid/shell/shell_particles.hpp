@@ -1,8 +1,9 @@
 // The shell's particles, struct-of-arrays: one line of particles on the
 // plate's mid-surface (in 2-D, its mid-line), each with a position and a
-// rotation as degrees of freedom. The reference line (X, S, the neighbour
-// lists and their corrected kernel gradients) is fixed when the solver starts.
-// Clamped particles neither move nor turn.
+// rotation as degrees of freedom, and the stress points between neighbours
+// where the strains are taken (shell_dynamics.hpp). The reference line (X, S,
+// the stress points) is fixed when the solver starts. Clamped particles
+// neither move nor turn.
 #pragma once
 
 #include <cstdint>
@@ -14,12 +15,27 @@ namespace cosph::solid::shell {
 
 using sph::Vec2;
 
-// A neighbour j of particle i along the reference line.
-struct LineNeighbour {
-  int j;
-  double S_ij;  // S_j - S_i, the signed reference distance along the line
-  double W;     // the 1-D kernel at |S_ij| (line_kernel.hpp)
-  double G;     // corrected gradient weight: d(.)/dS at i ~ sum_j ((.)_j - (.)_i) G
+// The stress points, one midway between each pair of neighbouring particles
+// (i, i + 1) of which at least one is free: the strains, resultants and strain
+// energy of the line between them.
+struct ShellStressPoints {
+  std::vector<int> i;                 // the particle before; the one after is i + 1
+  std::vector<double> ds;             // reference length between the two, m
+  std::vector<Vec2> dx_dS;            // the mid-line's tangent x'
+  std::vector<double> kappa;          // d theta / dS
+  std::vector<double> N, Q, M;        // axial force, shear force (N/m), bending moment (N m/m)
+  std::vector<Vec2> n;                // force resultant N t + Q d, N/m
+  std::vector<double> couple;         // x' x n, N/m
+  std::vector<double> strain_energy;  // per unit reference length, J/m^2
+
+  std::size_t size() const { return i.size(); }
+  void add(int before, double length) {
+    i.push_back(before);
+    ds.push_back(length);
+    dx_dS.emplace_back(Vec2::Zero());
+    for (auto* field : {&kappa, &N, &Q, &M, &couple, &strain_energy}) field->push_back(0.0);
+    n.emplace_back(Vec2::Zero());
+  }
 };
 
 struct ShellParticles {
@@ -27,12 +43,12 @@ struct ShellParticles {
   std::vector<int> id;
   std::vector<Vec2> X;    // reference position on the mid-line
   std::vector<double> S;  // reference arc length along the line
-  std::vector<double> V;  // length of line the particle stands for, ds
-  std::vector<double> m;  // rho t ds
-  std::vector<double> J;  // rotational inertia rho t^3 / 12 ds
+  std::vector<double> V;  // length of line the particle stands for: ds, ds/2 at the ends
+  std::vector<double> m;  // rho t V
+  std::vector<double> J;  // rotational inertia rho t^3 / 12 V
   std::vector<double> c;  // axial sound speed sqrt(E' / rho), E' = E / (1 - nu^2)
   std::vector<std::uint8_t> clamped;
-  std::vector<std::vector<LineNeighbour>> neighbours;
+  ShellStressPoints stress;
 
   // State: mid-line position and velocity, rotation of the director against
   // the reference (counter-clockwise positive) and its rate.
@@ -48,23 +64,17 @@ struct ShellParticles {
   std::vector<double> kick_alpha;
 
   // Derived from the state each step (shell_dynamics.hpp).
-  std::vector<Vec2> dx_dS;            // the mid-line's tangent, dx/dS
-  std::vector<double> kappa;          // d theta / dS
-  std::vector<double> N, Q, M;        // axial force, shear force (N/m), bending moment (N m/m)
-  std::vector<double> strain_energy;  // per unit reference length, J/m^2
-  std::vector<Vec2> a;                // dv/dt from the shell's own forces (zero for clamped)
-  std::vector<double> alpha;          // d omega/dt from the shell's own moments
+  std::vector<double> N, Q, M;  // the particle's resultants: the mean of its stress points'
+  std::vector<Vec2> a;          // dv/dt from the shell's own forces (zero for clamped)
+  std::vector<double> alpha;    // d omega/dt from the shell's own moments
 
   std::size_t size() const { return x.size(); }
 
   void resize_derived() {
     const std::size_t n = size();
-    dx_dS.assign(n, Vec2::Zero());
-    kappa.assign(n, 0.0);
     N.assign(n, 0.0);
     Q.assign(n, 0.0);
     M.assign(n, 0.0);
-    strain_energy.assign(n, 0.0);
     a.assign(n, Vec2::Zero());
     alpha.assign(n, 0.0);
     external_a.assign(n, Vec2::Zero());

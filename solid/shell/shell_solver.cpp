@@ -60,7 +60,7 @@ ShellSolver::ShellSolver(const sph::CaseFile& case_file, const SolidParameters& 
     : ParticleSolver(parameters,
                      build_shell(case_file, parameters, line, section_of(line, parameters))),
       line_(line),
-      forces_{section_of(line, parameters), line.phi0(), parameters.hourglass_alpha, line.ds},
+      forces_{section_of(line, parameters), line.phi0()},
       end_load_(read_end_load(case_file, particles_)) {
   if (parameters_.tip_gauge)
     tip_ids_ = tip_gauge_ids(particles_.id, particles_.X, *parameters_.tip_gauge, line_.ds);
@@ -70,7 +70,7 @@ ShellSolver::ShellSolver(const sph::CaseFile& case_file, const SolidParameters& 
 void ShellSolver::update() {
   ShellParticles& P = particles_;
   compute_strains(P, forces_);
-  compute_accelerations(P, forces_);
+  compute_accelerations(P);
   // The end particle sits on the free end: the load acts on it.
   if (end_load_ && !P.clamped[end_load_->particle])
     P.a[end_load_->particle] += end_load_->at(time_) / P.m[end_load_->particle];
@@ -118,7 +118,8 @@ void ShellSolver::end_step(double dt) {
 }
 
 void ShellSolver::collect_interface(const sph::Region& region, sph::InterfaceParticles& out) {
-  faces_.collect(particles_, forces_.section, forces_.phi0, parameters_.h, region, out);
+  faces_.collect(particles_, forces_.section, forces_.phi0, parameters_.h, parameters_.dx, region,
+                 out);
 }
 
 void ShellSolver::set_interface_accelerations(const std::vector<Vec2>& accelerations) {
@@ -144,9 +145,12 @@ std::vector<sph::Gauge> ShellSolver::gauge_values() const {
   for (std::size_t i = 0; i < P.size(); ++i) {
     g.kinetic_energy += 0.5 * (P.m[i] * P.v[i].squaredNorm() + P.J[i] * P.omega[i] * P.omega[i]);
     g.max_speed = std::max(g.max_speed, P.v[i].norm());
-    g.elastic_energy += P.V[i] * P.strain_energy[i];
+  }
+  const ShellStressPoints& s = P.stress;
+  for (std::size_t k = 0; k < s.size(); ++k) {
+    g.elastic_energy += s.ds[k] * s.strain_energy[k];
     // The outer fibres' axial stress, uniaxial in the section's plane.
-    const double fibre = std::abs(P.N[i]) / t + 6.0 * std::abs(P.M[i]) / (t * t);
+    const double fibre = std::abs(s.N[k]) / t + 6.0 * std::abs(s.M[k]) / (t * t);
     g.max_von_mises =
         std::max(g.max_von_mises, sph::von_mises(sph::Mat2{{fibre, 0.0}, {0.0, 0.0}}));
   }
@@ -160,15 +164,22 @@ std::vector<sph::Gauge> ShellSolver::gauge_values() const {
 
 void ShellSolver::check_state() const {
   const ShellParticles& P = particles_;
-  const double EA = forces_.section.EA();
+  // The largest axial strain of a particle's stress points.
+  std::vector<double> strain(P.size(), 0.0);
+  for (std::size_t k = 0; k < P.stress.size(); ++k) {
+    const std::size_t i = static_cast<std::size_t>(P.stress.i[k]);
+    const double eps = std::abs(P.stress.N[k] / forces_.section.EA());
+    strain[i] = std::max(strain[i], eps);
+    strain[i + 1] = std::max(strain[i + 1], eps);
+  }
   sph::stop_at_first_runaway(
       P, "shell particle", time_, steps_,
-      [&P, EA](std::size_t i) -> const char* {
+      [&P, &strain](std::size_t i) -> const char* {
         if (!P.x[i].allFinite() || !P.v[i].allFinite() || !std::isfinite(P.theta[i]) ||
             !std::isfinite(P.omega[i]))
           return "its state is not finite";
         if (P.v[i].norm() > P.c[i]) return "it moves faster than the shell's axial sound speed";
-        if (!(std::abs(P.N[i] / EA) < 0.5))
+        if (!(strain[i] < 0.5))
           return "its axial strain left (-0.5, 0.5) (far outside the linear law)";
         return nullptr;
       },
@@ -184,6 +195,7 @@ sph::Snapshot ShellSolver::snapshot() const {
   std::vector<double> density(P.size(), forces_.section.rho);
   sph::Snapshot snapshot(P.x);
   snapshot.add_scalar("id", P.id);
+  snapshot.add_scalar("mass", P.m);  // half at the ends: the mid-line's lumped masses
   snapshot.add_vector("velocity", P.v);
   snapshot.add_scalar("density", density);
   snapshot.add_scalar("rotation", P.theta);

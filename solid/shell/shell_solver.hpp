@@ -4,8 +4,8 @@
 // particle across bends with the exact stiffness EI of the section. In 2-D
 // the shell is Reissner's geometrically exact (Timoshenko) beam in plane
 // strain (reissner_beam.hpp, shell_section.hpp), in total-Lagrangian SPH along
-// the reference line (shell_dynamics.hpp) with hourglass control
-// (line_hourglass.hpp): Wu, Zhang & Hu 2024 (J. Comput. Phys. 113113)
+// the reference line with its strains at stress points between neighbours
+// (shell_dynamics.hpp): Wu, Zhang & Hu 2024 (J. Comput. Phys. 113113)
 // reduced to a line. The water sees both faces (shell_faces.hpp).
 //
 // Step from t to t + dt, kick-drift-kick on position and rotation alike:

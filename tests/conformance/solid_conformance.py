@@ -9,7 +9,13 @@ Any solid model that takes part in a coupled cosph run must pass it:
 --bin is the folder holding cosph-case, cosph-coupler and cosph-dummy
 (default: the folder of --solid, then build/bin). --model is written as solid.model into
 the cases (default: "jaumann" for cosph-solid-jaumann, "total_lagrangian" for
-cosph-solid-tl, otherwise the field is left out).
+cosph-solid-tl, "shell" for cosph-solid-shell, otherwise the field is left out).
+--thin runs the bodies as thin plates, for a solid of thin bodies only
+(reduced-dimension: one line of particles on the mid-line; default for
+solid.model "shell"): the free bar 5 mm thick and standing 40 mm tall, the
+cantilever 5 mm thick and 8 times stiffer (the same deflection). Such a solid
+has round(length / spacing) + 1 particles along its mid-line and presents two
+interface particles (one per face) for each.
 
 The solid under test runs against cosph-coupler and a cosph-dummy fluid: a
 block of particles left of x = 0 with a prescribed uniform stress -P I and no
@@ -62,6 +68,7 @@ REPO = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 # Filled in by main() from the command line.
 SOLID = None   # the executable under test
 MODEL = None   # solid.model, or None to leave the field out
+THIN = False   # --thin: the bodies as thin plates
 BIN = None     # folder with cosph-coupler and cosph-dummy
 
 DX = 0.0025          # m, particle spacing of both the solid and the dummy fluid
@@ -229,6 +236,21 @@ def read_snapshot(path):
     return data
 
 
+def solid_particles(box, dx=DX):
+    """How many particles the solid has for a body box: a lattice, or with
+    --thin one line along the box's long side, a particle on each end."""
+    if THIN:
+        (x0, y0, x1, y1) = box
+        return int(round(max(x1 - x0, y1 - y0) / dx)) + 1
+    return len(lattice(box, dx))
+
+
+def interface_particles(box, dx=DX):
+    """How many interface particles the whole body presents: with --thin, two
+    faces for each mid-line particle."""
+    return (2 if THIN else 1) * solid_particles(box, dx)
+
+
 def lattice(box, dx=DX):
     """Particle centres of a box filled on the square lattice (half a spacing inside)."""
     (x0, y0, x1, y1) = box
@@ -301,7 +323,7 @@ class BadInput(unittest.TestCase):
 
     def test_gives_up_when_no_coupler_answers(self):
         timeout = 1.0
-        _, solid = self.start_solid(case_text((0, 0, 0.02, 0.01), timeout=timeout))
+        _, solid = self.start_solid(case_text(PushedFreeBar.BAR, timeout=timeout))
         start = time.monotonic()
         code = solid.wait(timeout + GRACE_S)
         elapsed = time.monotonic() - start
@@ -322,14 +344,19 @@ class PushedFreeBar(unittest.TestCase):
     coupler sends can, so the centre of mass must move exactly as the force
     the coupler records (coupling.csv, every step) integrated twice says."""
 
-    BAR = (0.0, 0.0, 0.02, 0.02)   # m: 8 x 8 particles
+    THICK_BAR = (0.0, 0.0, 0.02, 0.02)   # m: 8 x 8 particles
+    # m: 2 spacings thick, standing out of the fluid above and below (not all is
+    # sent; the push is symmetric in y).
+    THIN_BAR = (0.0, -0.01, 0.005, 0.03)
+    FLUID_HEIGHT = 0.02            # m
+    BAR = THICK_BAR                # main() sets THIN_BAR with --thin
     FLUID_PARTICLES = 64           # 8 x 8, x in [-0.02, 0], y in [0, 0.02]
     END_TIME = 0.01                # s: about 430 steps; the bar moves about 1.8 mm
     TOLERANCE = 0.01               # relative, on the centre of mass's velocity and displacement
 
     @classmethod
     def setUpClass(cls):
-        case = case_text(cls.BAR, tip=(0.02, 0.01), end_time=cls.END_TIME, timeout=2.0)
+        case = case_text(cls.BAR, tip=(cls.BAR[2], 0.5 * cls.FLUID_HEIGHT), end_time=cls.END_TIME, timeout=2.0)
         cls.coupled = CoupledRun("bar", case, cls.FLUID_PARTICLES)
         cls.codes = cls.coupled.wait_all(FINISH_S)
         print(f"\n  pushed free bar: exit codes {cls.codes} in {cls.coupled.seconds:.1f} s",
@@ -351,7 +378,7 @@ class PushedFreeBar(unittest.TestCase):
 
     def test_interface_is_well_formed(self):
         c, _ = read_csv(os.path.join(self.coupled.out, "coupling.csv"))
-        n_solid = len(lattice(self.BAR))
+        n_solid = interface_particles(self.BAR)
         sent = c["solid_interface_particles"]
         self.assertTrue(np.all(sent > 0), "the solid sent no interface particles")
         # The coupler asks for the particles near the fluid (its bounds grown by
@@ -370,7 +397,7 @@ class PushedFreeBar(unittest.TestCase):
         print(f"\n  interface: {sent.min():.0f}-{sent.max():.0f} of {n_solid} solid particles "
               f"sent, {c['pairs'].min():.0f}-{c['pairs'].max():.0f} pairs, force on the bar "
               f"{c['force_on_solid_x'][0]:.2f} N/m at t = 0 (P H = "
-              f"{PRESSURE * self.BAR[3]:.2f} N/m)", file=sys.stderr)
+              f"{PRESSURE * self.FLUID_HEIGHT:.2f} N/m)", file=sys.stderr)
 
     def test_tip_gauges_with_units(self):
         _, units = read_csv(os.path.join(self.coupled.out, "timeseries.csv"))
@@ -389,7 +416,7 @@ class PushedFreeBar(unittest.TestCase):
         first, last = read_snapshot(files[0]), read_snapshot(files[-1])
         self.assertAlmostEqual(first["time"], 0.0, delta=1e-12)
         self.assertAlmostEqual(last["time"], self.END_TIME, delta=1e-9 * self.END_TIME)
-        self.assertEqual(last["position"].shape[0], len(lattice(self.BAR)))
+        self.assertEqual(last["position"].shape[0], solid_particles(self.BAR))
         self.assertTrue(np.all(np.isfinite(last["position"])))
 
     def test_centre_of_mass_moves_by_the_delivered_impulse(self):
@@ -442,6 +469,7 @@ class Cantilever(unittest.TestCase):
     L, T = 0.05, 0.01             # m: free length, thickness
     CLAMP = 0.0075                # m: clamped depth below y = 0 (6 rows)
     E = 1e8                       # Pa
+    THIN_T, THIN_E = 0.005, 8e8   # m, Pa: with --thin (main() sets them), the same E' T^3
     END_TIME = 0.006              # s: 1.2 periods of the first bending mode
     TOLERANCE = 0.15              # relative, on the mean tip deflection
 
@@ -492,7 +520,7 @@ class PeerDies(unittest.TestCase):
     TIMEOUT = 1.0   # s, coupling.timeout
 
     def test_solid_exits_non_zero_when_the_fluid_is_killed(self):
-        case = case_text(PushedFreeBar.BAR, tip=(0.02, 0.01), end_time=10.0, timeout=self.TIMEOUT,
+        case = case_text(PushedFreeBar.BAR, tip=(PushedFreeBar.BAR[2], 0.01), end_time=10.0, timeout=self.TIMEOUT,
                          output_interval=1e-4, snapshot_interval=10.0)
         run = CoupledRun("peer_dies", case, PushedFreeBar.FLUID_PARTICLES)
         try:
@@ -525,12 +553,12 @@ class PeerDies(unittest.TestCase):
 
 
 def default_model(solid):
-    return {"cosph-solid-jaumann": "jaumann", "cosph-solid-tl": "total_lagrangian"}.get(
-        os.path.basename(solid))
+    return {"cosph-solid-jaumann": "jaumann", "cosph-solid-tl": "total_lagrangian",
+            "cosph-solid-shell": "shell"}.get(os.path.basename(solid))
 
 
 def main():
-    global SOLID, MODEL, BIN
+    global SOLID, MODEL, BIN, THIN
     parser = argparse.ArgumentParser(
         description="Conformance suite for a cosph solid executable.",
         epilog="Other arguments go to unittest (e.g. -v, PushedFreeBar).")
@@ -539,11 +567,17 @@ def main():
                                         "(default: from the executable's name, else left out)")
     parser.add_argument("--bin", help="folder with cosph-case, cosph-coupler and cosph-dummy "
                                       "(default: the solid's folder, else build/bin)")
+    parser.add_argument("--thin", action="store_true",
+                        help="run the bodies as thin plates (default for solid.model shell)")
     args, rest = parser.parse_known_args()
     SOLID = os.path.abspath(args.solid)
     if not (os.path.isfile(SOLID) and os.access(SOLID, os.X_OK)):
         parser.error(f"--solid {args.solid}: not an executable file")
     MODEL = args.model if args.model is not None else default_model(SOLID)
+    THIN = args.thin or MODEL == "shell"
+    if THIN:
+        PushedFreeBar.BAR = PushedFreeBar.THIN_BAR
+        Cantilever.T, Cantilever.E = Cantilever.THIN_T, Cantilever.THIN_E
     candidates = [args.bin] if args.bin else [os.path.dirname(SOLID),
                                               os.path.join(REPO, "build", "bin")]
     for folder in candidates:
@@ -554,8 +588,8 @@ def main():
     else:
         parser.error(f"no cosph-case, cosph-coupler and cosph-dummy in {', '.join(candidates)} "
                      f"(give --bin)")
-    print(f"solid under test: {SOLID} (solid.model: {MODEL or 'not set'}), coupler and dummy "
-          f"from {BIN}", file=sys.stderr)
+    print(f"solid under test: {SOLID} (solid.model: {MODEL or 'not set'}"
+          f"{', thin bodies' if THIN else ''}), coupler and dummy from {BIN}", file=sys.stderr)
     unittest.main(argv=[sys.argv[0]] + rest)
 
 

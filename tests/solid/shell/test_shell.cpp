@@ -1,11 +1,14 @@
 // The reduced-dimension shell (solid/shell): the thin-box rule refuses a thick
 // body, the faces the water sees (geometry, and forces back as force and
-// moment), and the Antoci plate's first-mode period at 8 particles along.
+// moment), no zero-energy mode, and the Antoci plate's first-mode period at 8
+// particles along.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bending_mode.hpp"
@@ -93,6 +96,8 @@ TEST(Shell, FacesLieOnBothSurfacesAndMoveWithTheSection) {
     EXPECT_LT((out.x[k] - (P.x[i] + r)).norm(), 1e-15);
     EXPECT_LT((out.v[k] - (P.v[i] + 3.0 * Vec2(-r.y(), r.x()))).norm(), 1e-14);
     EXPECT_NEAR(out.m[k], 0.5 * P.m[i], 1e-15);
+    // The water sees one layer of wall particles at the solid's spacing.
+    EXPECT_NEAR(out.m[k] / out.rho[k], P.V[i] * solver.parameters().dx, 1e-15);
   }
 }
 
@@ -146,11 +151,57 @@ TEST(Shell, FaceForcesReturnAsForceAndMoment) {
   EXPECT_NEAR(M, -tau * 0.5 * kT * length, 1e-9 * tau * kT * length);
 }
 
+// A zigzag of the deflection, of the rotation or along the line costs strain
+// energy (the stress points see it), while a rigid motion costs none.
+TEST(Shell, ZigzagsCostEnergyRigidMotionsDoNot) {
+  ShellSolver solver = solver_of(plate_case("shell_zigzag", 8));
+  ShellParticles& P = solver.particles();
+  const ShellParticles rest = P;
+  auto energy = [&] {
+    solver.update();
+    double U = 0.0;
+    for (std::size_t k = 0; k < P.stress.size(); ++k)
+      U += P.stress.ds[k] * P.stress.strain_energy[k];
+    return U;
+  };
+  const double u = 1e-4, angle = 0.3;  // m, rad
+  const double ds = solver.line().ds, EI = solver.force_parameters().section.EI();
+  auto zigzag = [&](std::size_t i) { return P.clamped[i] ? 0.0 : (i % 2 == 0 ? 1.0 : -1.0); };
+  for (int field = 0; field < 3; ++field) {
+    P = rest;
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      if (field == 0) P.x[i].y() += u * zigzag(i);
+      if (field == 1) P.theta[i] += u / ds * zigzag(i);
+      if (field == 2) P.x[i].x() += u * zigzag(i);
+    }
+    // At least most of the bending energy of a curvature 2u/ds^2 over the free
+    // length (the rotation's zigzag; the deflection's costs shear, more).
+    const double least = 0.8 * 0.5 * EI * std::pow(2.0 * u / (ds * ds), 2) * kL;
+    EXPECT_GT(energy(), least) << "zigzag " << field;
+  }
+  // A rigid rotation of the whole line, clamp included, about the origin.
+  P = rest;
+  const double c = std::cos(angle), s = std::sin(angle);
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    P.x[i] = Vec2(c * P.X[i].x() - s * P.X[i].y(), s * P.X[i].x() + c * P.X[i].y());
+    P.theta[i] = angle;
+  }
+  EXPECT_LT(energy(), 1e-20);
+  // Round-off only: what an axial strain of 1e-12 would give.
+  const ShellSection& section = solver.force_parameters().section;
+  const double a_scale = 1e-12 * section.EA() / P.m[8];
+  const double alpha_scale = 1e-12 * section.EA() * ds / P.J[8];
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    EXPECT_LT(P.a[i].norm(), a_scale) << i;
+    EXPECT_LT(std::abs(P.alpha[i]), alpha_scale) << i;
+  }
+}
+
 // First-mode period of the Antoci plate at 8 particles along the free length,
-// against Euler-Bernoulli in plane strain (T = 0.0678 s). Measured: -4.4 %
-// with the default hourglass control (docs/results/shell.md); the issue's
-// target is 1 %, not met yet. The test guards the measured accuracy.
-constexpr double kPeriodTolerance = 0.06;
+// against Euler-Bernoulli in plane strain (T = 0.0678 s): the target
+// is 1 % (docs/results/shell.md; the Timoshenko beam the shell converges to is
+// 0.4 % longer).
+constexpr double kPeriodTolerance = 0.01;
 
 TEST(Shell, AntociPlatePeriodAtEightParticles) {
   ShellSolver solver = solver_of(
@@ -171,6 +222,72 @@ TEST(Shell, AntociPlatePeriodAtEightParticles) {
   ASSERT_GE(downward.size(), 2u);
   const double measured = downward[1] - downward[0];
   EXPECT_NEAR(measured / T - 1.0, 0.0, kPeriodTolerance) << "period " << measured << " s";
+}
+
+// The elastica of a cantilever under a dead end load P, L = 1: with psi the
+// downward slope, psi'' = -alpha cos psi, psi(0) = 0, psi'(1) = 0 (no moment
+// at the free end), alpha = P L^2 / EI. Shooting on psi'(0) in [0, alpha] with
+// RK4; returns the tip's deflection / L and rotation (Bisshopp & Drucker 1945
+// solve the same problem with elliptic integrals).
+std::pair<double, double> elastica_tip(double alpha) {
+  constexpr int kSteps = 2000;
+  auto shoot = [&](double slope0, double& deflection) {
+    // State (psi, psi', y); y' = sin psi.
+    std::array<double, 3> y{0.0, slope0, 0.0};
+    auto rhs = [&](const std::array<double, 3>& q) {
+      return std::array<double, 3>{q[1], -alpha * std::cos(q[0]), std::sin(q[0])};
+    };
+    const double h = 1.0 / kSteps;
+    for (int k = 0; k < kSteps; ++k) {
+      auto add = [&](const std::array<double, 3>& a, const std::array<double, 3>& b, double f) {
+        return std::array<double, 3>{a[0] + f * b[0], a[1] + f * b[1], a[2] + f * b[2]};
+      };
+      const auto k1 = rhs(y), k2 = rhs(add(y, k1, h / 2)), k3 = rhs(add(y, k2, h / 2)),
+                 k4 = rhs(add(y, k3, h));
+      for (int c = 0; c < 3; ++c) y[c] += h / 6 * (k1[c] + 2 * k2[c] + 2 * k3[c] + k4[c]);
+    }
+    deflection = y[2];
+    return std::pair{y[1], y[0]};  // psi'(1), psi(1)
+  };
+  double low = 0.0, high = alpha, deflection = 0.0, rotation = 0.0;
+  for (int k = 0; k < 60; ++k) {
+    const double middle = 0.5 * (low + high);
+    const auto [end_slope, end_angle] = shoot(middle, deflection);
+    rotation = end_angle;
+    (end_slope < 0.0 ? low : high) = middle;
+  }
+  return {deflection, rotation};
+}
+
+// The elastica at alpha = 2 (tip rotation 45 degrees), 8 particles along
+// (cases/shell_elastica.pbtxt): the target is 2 %.
+TEST(Shell, CantileverUnderALargeEndLoadFollowsTheElastica) {
+  const double L = 0.15, alpha = 2.0, end = 1.6, average = 0.5;  // m, -, s, s
+  const double dx = L / 8;
+  const sph::CaseFile case_file =
+      sph::load_case(std::string(COSPH_SOURCE_DIR) + "/cases/shell_elastica.pbtxt");
+  sph::CaseFile coarse = case_file;
+  auto& solid = *coarse.config.mutable_solid();
+  solid.set_spacing(dx);
+  solid.mutable_body(0)->mutable_min()->set_x(-4 * dx);
+  solid.mutable_clamp(0)->mutable_min()->set_x(-4 * dx);
+  ShellSolver solver(coarse, read_solid_parameters(coarse));
+  const double EI = solver.force_parameters().section.EI();
+  solid.mutable_end_load()->mutable_force()->set_y(-alpha * EI / (L * L));
+  solver = ShellSolver(coarse, read_solid_parameters(coarse));
+  const std::size_t tip = solver.particles().size() - 1;
+  double deflection = 0.0, rotation = 0.0, samples = 0.0;
+  while (solver.time() < end) {
+    const double dt = solver.step_limits().smallest();
+    solver.step(dt);
+    if (solver.time() < end - average) continue;
+    deflection += dt * (solver.particles().X[tip].y() - solver.particles().x[tip].y());
+    rotation += dt * -solver.particles().theta[tip];
+    samples += dt;
+  }
+  const auto [exact_deflection, exact_rotation] = elastica_tip(alpha);
+  EXPECT_NEAR(deflection / samples / L / exact_deflection, 1.0, 0.02);
+  EXPECT_NEAR(rotation / samples / exact_rotation, 1.0, 0.02);
 }
 
 }  // namespace

@@ -1,0 +1,81 @@
+#!/usr/bin/python3
+"""The coupled elastic plate (Antoci et al. 2007) with the shell solid.
+
+Runs cases/elastic_plate.pbtxt through the launcher with solid.model=shell
+(the plate's box, 5 mm thick, read as a shell along its length), at three
+spacings of the solid (2, 1 and 0.5 mm; the water at the case's 2 mm), and
+in SPHinXsys's elastic gate configuration (issue 39: E = 7.8 MPa,
+nu = 0.47, water 2.5 mm, plate 1.25 mm, max_substeps 32). For each: the RMS
+error of the free end's displacement over the experimental points and the
+launcher's wall time. Writes docs/results/shell_coupled.md and
+docs/figures/shell_coupled.png.
+
+usage: /usr/bin/python3 scripts/validate_shell_coupled.py [--reuse] [--only SUFFIX ...]
+  --reuse   analyse the runs already in out/validation/shell_coupled_* instead of running
+"""
+import argparse
+import os
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+
+import cosph_results as cr  # noqa: E402
+
+SHELL = ["solid.model=shell"]
+PEER = ["solid.youngs_modulus=7.8e6", "solid.poisson_ratio=0.47", "fluid.spacing=0.0025",
+        "solid.spacing=0.00125", "coupling.max_substeps=32"]
+RUNS = [("shell, plate 2 mm", "ds2", SHELL + ["solid.spacing=0.002"]),
+        ("shell, plate 1 mm (the case's spacing)", "ds1", SHELL),
+        ("shell, plate 0.5 mm", "ds05", SHELL + ["solid.spacing=0.0005"]),
+        ("shell, SPHinXsys's elastic gate (E 7.8 MPa, nu 0.47, water 2.5 mm, plate 1.25 mm, "
+         "max_substeps 32)", "peer", SHELL + PEER)]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--reuse", action="store_true")
+    parser.add_argument("--only", action="append", default=[])
+    args = parser.parse_args()
+    experiment = {axis: cr.reference(f"antoci2007_plate_exp_{axis}.csv") for axis in "xy"}
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.2))
+    for k, axis in enumerate("xy"):
+        axes[k].plot(experiment[axis]["t_s"], 1e3 * experiment[axis][f"d{axis}_m"], "ko",
+                     label="Antoci 2007 (experiment)", zorder=5)
+    rows = []
+    for n, (label, suffix, settings) in enumerate(RUNS):
+        out = os.path.join(cr.REPO, "out", "validation", f"shell_coupled_{suffix}")
+        reuse = args.reuse or bool(args.only and suffix not in args.only)
+        wall, failure = cr.run_or_reuse("elastic_plate", out, settings, reuse)
+        if not os.path.exists(os.path.join(out, "timeseries.csv")):
+            print(f"skipping {label}: no run in {out}")
+            continue
+        series = cr.read_csv(os.path.join(out, "timeseries.csv"))
+        t = series["t"]
+        errors = []
+        for k, axis in enumerate("xy"):
+            within = experiment[axis]["t_s"] <= t[-1]
+            errors.append(cr.rms_error(t, series[f"tip_d{axis}"], experiment[axis]["t_s"][within],
+                                       experiment[axis][f"d{axis}_m"][within]))
+            axes[k].plot(t, 1e3 * series[f"tip_d{axis}"], f"C{n}",
+                         label=f"{label.split(' (')[0]}: RMS {1e3 * errors[-1]:.1f} mm")
+        rows.append([label, f"{1e3 * errors[0]:.1f}", f"{1e3 * errors[1]:.1f}",
+                     f"{t[-1]:.3f}", f"{wall:.0f}" if wall else "", failure])
+    for k, axis in enumerate("xy"):
+        axes[k].set(xlabel="t (s)", ylabel=f"free-end displacement d{axis} (mm)", xlim=(0, 0.4))
+        axes[k].legend(fontsize=7)
+    fig.tight_layout()
+    fig.savefig(os.path.join(cr.FIGURES, "shell_coupled.png"), dpi=110)
+    cr.write_table("shell_coupled",
+                   ["run", "tip x RMS (mm)", "tip y RMS (mm)", "reached t (s)", "wall time (s)",
+                    "failure"], rows,
+                   "The elastic plate of Antoci et al. 2007 (`cases/elastic_plate.pbtxt`) with "
+                   "`--set solid.model=shell`, written by `scripts/validate_shell_coupled.py`: RMS "
+                   "of the free end's displacement against the experiment, and the launcher's wall "
+                   "time on this shared two-core machine.")
+
+
+if __name__ == "__main__":
+    main()
