@@ -7,6 +7,7 @@
 #include "dissipation.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/run_parameters.hpp"
+#include "wall_motion.hpp"
 
 namespace cosph::fluid {
 
@@ -21,6 +22,8 @@ struct FluidParameters {
   double A, B;                  // Monaghan artificial viscosity
   double left_wall_x, floor_y;  // gauges
   std::vector<sph::Vec2> pressure_probes;
+  std::vector<double> level_probes;      // x of each water-level gauge
+  std::vector<WallMotion> wall_motions;  // of fluid.moving_walls, in order
 
   // Of the water's sound waves and pressure noise.
   Dissipation dissipation = Dissipation::delta_sph;

@@ -6,6 +6,7 @@
 #include "equation_of_state.hpp"
 #include "sphcore/kernel.hpp"
 #include "sphcore/lattice.hpp"
+#include "sphcore/region_reader.hpp"
 
 namespace cosph::fluid {
 namespace {
@@ -48,6 +49,24 @@ bool within_reach_of_water(const google::protobuf::RepeatedPtrField<Box>& walls,
   return false;
 }
 
+// The box around a moving wall where it is drawn: what the leak and overlap
+// checks see of it (the water must be closed at the start).
+std::vector<Box> moving_wall_bounds(const sph::CaseFile& case_file) {
+  std::vector<Box> boxes;
+  const auto& walls = case_file.config.fluid().moving_walls();
+  for (int k = 0; k < walls.size(); ++k) {
+    const sph::Bounds b = sph::read_region(walls[k].region(), case_file,
+                                           "fluid.moving_walls[" + std::to_string(k) + "].region")
+                              .bounds();
+    Box& box = boxes.emplace_back();
+    box.mutable_min()->set_x(b.min.x());
+    box.mutable_min()->set_y(b.min.y());
+    box.mutable_max()->set_x(b.max.x());
+    box.mutable_max()->set_y(b.max.y());
+  }
+  return boxes;
+}
+
 }  // namespace
 
 void check_walls_close(const sph::CaseFile& case_file, const FluidParameters& parameters) {
@@ -58,6 +77,8 @@ void check_walls_close(const sph::CaseFile& case_file, const FluidParameters& pa
                         case_file.config.solid().body().end());
   std::vector<Box> closers(fluid.walls().begin(), fluid.walls().end());
   closers.insert(closers.end(), solid_bodies.begin(), solid_bodies.end());
+  const std::vector<Box> moving_walls = moving_wall_bounds(case_file);
+  closers.insert(closers.end(), moving_walls.begin(), moving_walls.end());
   const double dx = parameters.dx, eps = 1e-3 * dx;
 
   for (int k = 0; k < fluid.water_size(); ++k) {
@@ -66,6 +87,9 @@ void check_walls_close(const sph::CaseFile& case_file, const FluidParameters& pa
     for (int w = 0; w < fluid.walls_size(); ++w)
       sph::require(!overlaps(fluid.walls(w), water, eps), case_file,
                    "fluid.walls[" + std::to_string(w) + "]", "overlaps " + name);
+    for (std::size_t w = 0; w < moving_walls.size(); ++w)
+      sph::require(!overlaps(moving_walls[w], water, eps), case_file,
+                   "fluid.moving_walls[" + std::to_string(w) + "]", "overlaps " + name);
     // Two phases on one site: the coupler's pair forces would tear them apart
     // at the first step, and the water would stay inside the solid's shape.
     for (std::size_t b = 0; b < solid_bodies.size(); ++b)
@@ -110,6 +134,19 @@ FluidParticles build_fluid_scene(const sph::CaseFile& case_file, const FluidPara
     for (const Vec2& x : sph::fill_box(box, p.dx))
       if (within_reach_of_water(fluid.walls(), x, p))
         particles.add(next_id++, Kind::wall, x, p.rho0, p.rho0 * area);
+  }
+  particles.fixed_walls = particles.first_wall_id.size();
+  // A moving wall keeps its particles within 2h of its own surface: it moves
+  // rigidly, so the others can never meet water.
+  const double reach = sph::kernel::kSupport * p.h;
+  for (int k = 0; k < fluid.moving_walls_size(); ++k) {
+    const sph::Shape shape =
+        sph::read_region(fluid.moving_walls(k).region(), case_file,
+                         "fluid.moving_walls[" + std::to_string(k) + "].region");
+    particles.first_wall_id.push_back(next_id);
+    for (const Vec2& x : sph::fill(shape, p.dx))
+      if (shape.depth(x) < reach)
+        particles.add(next_id++, Kind::moving_wall, x, p.rho0, p.rho0 * area);
   }
   particles.resize_derived();
   return particles;
