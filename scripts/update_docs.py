@@ -51,6 +51,7 @@ def case_results():
     elastic = first(table_rows("elastic_plate"), {"run": "cosph, synchronised"})
     khayyer = first(table_rows("elastic_plate"), {"run": "Khayyer"})
     fracture = first(table_rows("plate_fracture"), {"run": "synchronised"})
+    flume = table_rows("wave_flume")
 
     def text(row, make):
         return make(row) if row else missing
@@ -75,6 +76,10 @@ def case_results():
          text(fracture, lambda r: f"first failure at t = {r['first failure t (s)']} s, the piece "
               f"free by {r['piece free by t (s)']} s, its centre at x = {r['broken_x at end (m)']} m at the end"),
          "validation.md#fracture-the-plate-broken-by-the-flow-scene-3"),
+        ("[wave flume](cases/wave_flume.pbtxt)", "a piston wave maker, waves down a flume",
+         text(flume, lambda rows: "wave height against Biesel's linear theory: " + ", ".join(
+             f"{r['error']} at T = {r['period T (s)']} s" for r in rows)),
+         "validation.md#wave-flume-a-piston-wave-maker"),
     ]
     lines = ["| case | what | result | details |", "|---|---|---|---|"]
     lines += [f"| {case} | {what} | {result} | [validation](docs/{link}) |"

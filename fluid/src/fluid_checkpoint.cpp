@@ -34,6 +34,8 @@ void FluidSolver::save(sph::Checkpoint& checkpoint) const {
   checkpoint.put("external_drho", P.external_drho);
   checkpoint.put("spray", P.spray);
   checkpoint.put("shift", P.shift);
+  checkpoint.put("x_drawn", P.x_drawn);
+  checkpoint.put("wall_a", P.wall_a);
   checkpoint.put("x_at_sort", verlet_.x_at_sort());
   checkpoint.put("walls_in_reach", walls_in_reach_);
   checkpoint.put_count("sorts", sorts_);
@@ -67,6 +69,8 @@ void FluidSolver::restore(const sph::Checkpoint& checkpoint) {
   checkpoint.get("external_drho", P.external_drho);
   checkpoint.get("spray", P.spray);
   checkpoint.get("shift", P.shift);
+  checkpoint.get("x_drawn", P.x_drawn);
+  checkpoint.get("wall_a", P.wall_a);
   P.sigma.resize(P.size());  // from p and tau, before the momentum pass reads it
   std::vector<sph::Vec2> x_at_sort;
   checkpoint.get("x_at_sort", x_at_sort);

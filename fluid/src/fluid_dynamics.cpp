@@ -155,7 +155,8 @@ void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid,
       }
     });
     // Bounded below so that the Tait law can still give the wall a density.
-    P.p[w] = std::max(sum.wall_pressure(par.run.gravity), -0.5 * eos.P0());
+    // A moving wall's acceleration enters as g - a_w (fixed walls: a_w = 0).
+    P.p[w] = std::max(sum.wall_pressure(par.run.gravity - P.wall_a[w]), -0.5 * eos.P0());
     // A wall in reach at the sort may have no water within 2h: rho0 without
     // the pow().
     P.rho[w] = P.p[w] == 0.0 ? eos.rho0() : eos.density(P.p[w]);

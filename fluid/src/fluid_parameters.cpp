@@ -79,10 +79,28 @@ FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
             "is " + format_number(thickness) + " m thick, less than the kernel support 2h = " +
                 format_number(2.0 * p.h) + " m: water would see through it");
   }
+  for (int k = 0; k < fluid.moving_walls_size(); ++k) {
+    const std::string field = "fluid.moving_walls[" + std::to_string(k) + "].region";
+    require(fluid.moving_walls(k).has_region(), case_file, field, "missing: where is the wall?");
+    const sph::Shape shape = sph::read_region(fluid.moving_walls(k).region(), case_file, field);
+    if (shape.kind() != sph::Shape::Kind::box) continue;
+    const sph::Bounds box = shape.bounds();
+    const double thickness = (box.max - box.min).minCoeff();
+    require(thickness >= 2.0 * p.h - 1e-9, case_file, field,
+            "is " + format_number(thickness) + " m thick, less than the kernel support 2h = " +
+                format_number(2.0 * p.h) + " m: water would see through it");
+  }
+  p.wall_motions = read_wall_motions(case_file);
   p.left_wall_x = fluid.gauges().left_wall_x();
   p.floor_y = fluid.gauges().floor_y();
   for (const auto& probe : fluid.gauges().pressure_probes())
     p.pressure_probes.emplace_back(probe.x(), probe.y());
+  for (int k = 0; k < fluid.gauges().level_probes_size(); ++k) {
+    const double x = fluid.gauges().level_probes(k);
+    require(std::isfinite(x), case_file, "fluid.gauges.level_probes[" + std::to_string(k) + "]",
+            "must be finite");
+    p.level_probes.push_back(x);
+  }
   return p;
 }
 

@@ -9,6 +9,7 @@
 #include "sphcore/kernel_shape.hpp"
 #include "sphcore/run_parameters.hpp"
 #include "sphcore/shape.hpp"
+#include "wall_motion.hpp"
 
 namespace cosph::fluid {
 
@@ -23,8 +24,10 @@ struct FluidParameters {
   double A, B;                  // Monaghan artificial viscosity
   double left_wall_x, floor_y;  // gauges
   std::vector<sph::Vec2> pressure_probes;
-  std::vector<sph::Shape> water;  // fluid.water
-  std::vector<sph::Shape> walls;  // fluid.walls
+  std::vector<sph::Shape> water;         // fluid.water
+  std::vector<sph::Shape> walls;         // fluid.walls
+  std::vector<double> level_probes;      // x of each water-level gauge
+  std::vector<WallMotion> wall_motions;  // of fluid.moving_walls, in order
 
   // Of the water's sound waves and pressure noise.
   Dissipation dissipation = Dissipation::delta_sph;

@@ -16,7 +16,9 @@ namespace cosph::fluid {
 using sph::Mat2;
 using sph::Vec2;
 
-enum class Kind : std::uint8_t { water = 0, wall = 1 };
+// A moving wall follows one of fluid.moving_walls (wall_motion.hpp); every
+// test for "not water" treats it as a wall.
+enum class Kind : std::uint8_t { water = 0, wall = 1, moving_wall = 2 };
 
 struct FluidParticles {
   // State, carried from step to step (permuted with the neighbour grid).
@@ -35,6 +37,10 @@ struct FluidParticles {
   // delta-plus-SPH's particle shift (fluid.shifting), to be added at the next
   // drift: state, since it is found from one step's pairs and used in the next.
   std::vector<Vec2> shift;
+  // Moving walls: where the particle was drawn (its place at zero
+  // displacement or angle), and the wall's acceleration there now, which the
+  // wall pressure needs (zero for the other particles).
+  std::vector<Vec2> x_drawn, wall_a;
 
   // Derived each step from the state.
   std::vector<double> p;               // pressure (walls: extrapolated from the water)
@@ -59,11 +65,14 @@ struct FluidParticles {
   // Scene, fixed: the wall particles of fluid.walls[k] have the ids from
   // first_wall_id[k] up to first_wall_id[k + 1] (the last box: up to the
   // largest id). Ids survive the sorts; a per-particle field would have to be
-  // permuted with them.
+  // permuted with them. The fixed walls come first, then fluid.moving_walls:
+  // wall fixed_walls + k is moving wall k.
   std::vector<int> first_wall_id;
+  std::size_t fixed_walls = 0;
 
   std::size_t size() const { return x.size(); }
   bool is_water(std::size_t i) const { return kind[i] == Kind::water; }
+  bool is_moving_wall(std::size_t i) const { return kind[i] == Kind::moving_wall; }
   // Which of fluid.walls wall particle i belongs to.
   int wall_of(std::size_t i) const {
     const auto after = std::upper_bound(first_wall_id.begin(), first_wall_id.end(), id[i]);
@@ -77,6 +86,8 @@ struct FluidParticles {
     v.push_back(Vec2::Zero());
     rho.push_back(density);
     m.push_back(mass);
+    x_drawn.push_back(position);
+    wall_a.push_back(Vec2::Zero());
   }
 
   // Sizes the derived fields to match the state.
@@ -98,14 +109,14 @@ struct FluidParticles {
   // grid's: new index k holds old particle order[k]. The derived fields are
   // computed again from it before anything reads them.
   void permute_state(const std::vector<int>& order) {
-    sph::permute(order, id, kind, x, v, rho, m, grad_rho, external_a, shift);
+    sph::permute(order, id, kind, x, v, rho, m, grad_rho, external_a, shift, x_drawn, wall_a);
   }
 
   // Keeps the particles kept[0], kept[1], ... in that order; the others leave
   // with everything known of them.
   void keep_only(const std::vector<int>& kept) {
     sph::permute(kept, id, kind, x, v, rho, m, grad_rho, p, tau, sigma, inverse_rho, grad_rho_next,
-                 volume, a, drho, external_a, shift, external_drho, spray);
+                 volume, a, drho, external_a, shift, external_drho, spray, x_drawn, wall_a);
   }
 };
 

@@ -5,6 +5,7 @@
 
 #include "equation_of_state.hpp"
 #include "sphcore/kernel.hpp"
+#include "sphcore/region_reader.hpp"
 
 namespace cosph::fluid {
 namespace {
@@ -51,6 +52,20 @@ FluidParticles build_fluid_scene(const sph::CaseFile& case_file, const FluidPara
     for (const Vec2& x : sph::fill(wall, p.dx))
       if (within_reach_of_water(p.walls, x, p))
         particles.add(next_id++, Kind::wall, x, p.rho0, p.rho0 * area);
+  }
+  particles.fixed_walls = particles.first_wall_id.size();
+  const auto& fluid = case_file.config.fluid();
+  // A moving wall keeps its particles within 2h of its own surface: it moves
+  // rigidly, so the others can never meet water.
+  const double reach = sph::kernel::kSupport * p.h;
+  for (int k = 0; k < fluid.moving_walls_size(); ++k) {
+    const sph::Shape shape =
+        sph::read_region(fluid.moving_walls(k).region(), case_file,
+                         "fluid.moving_walls[" + std::to_string(k) + "].region");
+    particles.first_wall_id.push_back(next_id);
+    for (const Vec2& x : sph::fill(shape, p.dx))
+      if (shape.depth(x) < reach)
+        particles.add(next_id++, Kind::moving_wall, x, p.rho0, p.rho0 * area);
   }
   particles.resize_derived();
   return particles;

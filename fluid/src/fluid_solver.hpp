@@ -80,6 +80,10 @@ class FluidSolver : public sph::ParticleSolver<FluidSolver, FluidParticles, Flui
   // particles and rebuilding that list if it may have missed one.
   void find_neighbours(bool sort);
   void update_pressure();
+  // Puts moving wall particle i where its wall is at time t, with its
+  // acceleration there, and the wall's velocity at t_velocity (exact, from
+  // WallMotion).
+  void place_moving_wall(std::size_t i, double t, double t_velocity);
   void check_state() const;
   // False when every particle passes runaway_reason's tests with room to
   // spare (a cheap screen, sph::screen); true when one may fail them.

@@ -116,9 +116,15 @@ void check_walls_close(const sph::CaseFile& case_file, const FluidParameters& pa
   std::vector<Shape> bodies;
   if (config.has_solid())
     bodies = sph::read_regions(config.solid().body(), case_file, "solid.body");
+  // Moving walls where they are drawn: the water must be closed at the start.
+  std::vector<Shape> moving;
+  for (int k = 0; k < config.fluid().moving_walls_size(); ++k)
+    moving.push_back(sph::read_region(config.fluid().moving_walls(k).region(), case_file,
+                                      "fluid.moving_walls[" + std::to_string(k) + "].region"));
   std::vector<const Shape*> closers, everything;
   for (const Shape& wall : parameters.walls) closers.push_back(&wall);
   for (const Shape& body : bodies) closers.push_back(&body);
+  for (const Shape& wall : moving) closers.push_back(&wall);
   everything = closers;
   for (const Shape& water : parameters.water) everything.push_back(&water);
   const sph::Bounds scene = bounds_of(everything);
@@ -131,6 +137,12 @@ void check_walls_close(const sph::CaseFile& case_file, const FluidParameters& pa
     for (std::size_t w = 0; w < parameters.walls.size(); ++w) {
       const auto inside = overlap(fine_water, parameters.walls[w], dx);
       sph::require(!inside, case_file, "fluid.walls[" + std::to_string(w) + "]",
+                   "overlaps " + name + ": water at " + (inside ? at(*inside) : "") +
+                       " would lie inside it");
+    }
+    for (std::size_t w = 0; w < moving.size(); ++w) {
+      const auto inside = overlap(fine_water, moving[w], dx);
+      sph::require(!inside, case_file, "fluid.moving_walls[" + std::to_string(w) + "]",
                    "overlaps " + name + ": water at " + (inside ? at(*inside) : "") +
                        " would lie inside it");
     }

@@ -1,7 +1,7 @@
 // The shell's part of a checkpoint (docs/restart.md): the line's state, every
 // field derived from it that the next step reads before recomputing it, and
-// the counters. The reference line (neighbours, arc lengths) is fixed for the
-// run and built again from the case.
+// the counters. The reference line (its stress points, arc lengths) is
+// fixed for the run and built again from the case.
 #include <stdexcept>
 
 #include "shell_solver.hpp"
@@ -17,12 +17,19 @@ void ShellSolver::save(sph::Checkpoint& checkpoint) const {
   checkpoint.put("omega", P.omega);
   checkpoint.put("external_a", P.external_a);
   checkpoint.put("external_alpha", P.external_alpha);
-  checkpoint.put("dx_dS", P.dx_dS);
-  checkpoint.put("kappa", P.kappa);
+  checkpoint.put("kick_a", P.kick_a);
+  checkpoint.put("kick_alpha", P.kick_alpha);
   checkpoint.put("N", P.N);
   checkpoint.put("Q", P.Q);
   checkpoint.put("M", P.M);
-  checkpoint.put("strain_energy", P.strain_energy);
+  checkpoint.put("stress_dx_dS", P.stress.dx_dS);
+  checkpoint.put("stress_kappa", P.stress.kappa);
+  checkpoint.put("stress_N", P.stress.N);
+  checkpoint.put("stress_Q", P.stress.Q);
+  checkpoint.put("stress_M", P.stress.M);
+  checkpoint.put("stress_n", P.stress.n);
+  checkpoint.put("stress_couple", P.stress.couple);
+  checkpoint.put("stress_strain_energy", P.stress.strain_energy);
   checkpoint.put("a", P.a);
   checkpoint.put("alpha", P.alpha);
   checkpoint.put_value("time", time_);
@@ -41,12 +48,19 @@ void ShellSolver::restore(const sph::Checkpoint& checkpoint) {
   checkpoint.get("omega", P.omega);
   checkpoint.get("external_a", P.external_a);
   checkpoint.get("external_alpha", P.external_alpha);
-  checkpoint.get("dx_dS", P.dx_dS);
-  checkpoint.get("kappa", P.kappa);
+  checkpoint.get("kick_a", P.kick_a);
+  checkpoint.get("kick_alpha", P.kick_alpha);
   checkpoint.get("N", P.N);
   checkpoint.get("Q", P.Q);
   checkpoint.get("M", P.M);
-  checkpoint.get("strain_energy", P.strain_energy);
+  checkpoint.get("stress_dx_dS", P.stress.dx_dS);
+  checkpoint.get("stress_kappa", P.stress.kappa);
+  checkpoint.get("stress_N", P.stress.N);
+  checkpoint.get("stress_Q", P.stress.Q);
+  checkpoint.get("stress_M", P.stress.M);
+  checkpoint.get("stress_n", P.stress.n);
+  checkpoint.get("stress_couple", P.stress.couple);
+  checkpoint.get("stress_strain_energy", P.stress.strain_energy);
   checkpoint.get("a", P.a);
   checkpoint.get("alpha", P.alpha);
   time_ = checkpoint.value("time");

@@ -2,9 +2,11 @@
 // (Adami, Hu & Adams 2012, J. Comput. Phys. 231:7057, eq. 27):
 //   P_w = ( sum_f P_f W_wf + (g - a_w) . sum_f rho_f (x_w - x_f) W_wf ) / sum_f W_wf
 // Unlike walls that evolve their own density, this leaves no gap of about h
-// between water and wall. The fluid's walls do not move (a_w = 0); the coupler
-// uses the same sum for solid particles seen by the water as a moving wall,
-// with a_w the solid's acceleration (docs/physics.md, "Moving wall").
+// between water and wall. The fluid's fixed walls have a_w = 0, its moving
+// walls the acceleration of their prescribed motion; the coupler uses the same
+// sum for solid particles seen by the water as a moving wall, with a_w the
+// solid's acceleration when coupling.wall_acceleration asks for it
+// (docs/physics.md, "Moving wall").
 #pragma once
 
 #include "sphcore/types.hpp"
