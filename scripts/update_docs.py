@@ -48,7 +48,11 @@ def case_results():
     mps = first(table_rows("dam_break"), {"spacing (mm)": "Koshizuka"})
     plate = first(table_rows("oscillating_plate"),
                   {"velocity gradient": "quadratic", "particles across H": "16"})
-    elastic = first(table_rows("elastic_plate"), {"run": "cosph, synchronised"})
+    # The case leaves the stepping to the coupler, which chooses multi-rate
+    # with 32 sub-steps for this plate (docs/auto_substeps.md): the row of the
+    # case as it is, or, in a table from before that row, the same stepping.
+    elastic = (first(table_rows("elastic_plate"), {"run": "cosph, the case"})
+               or first(table_rows("elastic_plate"), {"run": "cosph, multi-rate, max_substeps 32"}))
     khayyer = first(table_rows("elastic_plate"), {"run": "Khayyer"})
     fracture = first(table_rows("plate_fracture"), {"run": "synchronised"})
     flume = table_rows("wave_flume")
@@ -68,7 +72,7 @@ def case_results():
          "validation.md#the-solid-alone-oscillating-plate"),
         ("[elastic plate](cases/elastic_plate.pbtxt)", "water bending a rubber plate (the main case)",
          text(elastic, lambda r: f"tip RMS {r['tip x RMS (mm)']} / {r['tip y RMS (mm)']} mm (x / y) "
-              f"against Antoci et al. 2007"
+              f"against Antoci et al. 2007, in {r['wall time (2 cores)']} on 2 cores"
               + (f" (Khayyer 2018: {khayyer['tip x RMS (mm)']} / {khayyer['tip y RMS (mm)']})"
                  if khayyer else "")),
          "validation.md#coupled-the-elastic-plate-of-antoci-et-al-scene-2"),

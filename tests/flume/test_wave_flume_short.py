@@ -32,23 +32,23 @@ class WaveFlumeShort(unittest.TestCase):
         cls.dir = tempfile.mkdtemp(prefix="cosph_wave_flume_")
         cls.t_from, cls.t_to = wt.gauge_window(PERIOD, DEPTH, PERIOD, GAUGE_X, FLUME_LENGTH)
         out = os.path.join(cls.dir, "out")
-        cls.run = case_runs.run_case(
+        cls.result = case_runs.run_case(
             "wave_flume", out,
             [f"fluid.spacing={SPACING}", f"fluid.moving_walls[0].piston.period={PERIOD}",
              f"fluid.moving_walls[0].piston.ramp_time={PERIOD}", f"run.end_time={cls.t_to + 0.05}",
              "run.snapshot_interval=100"])
         cls.series = (case_runs.read_csv(os.path.join(out, "timeseries.csv"))
-                      if cls.run.returncode == 0 else None)
+                      if cls.result.returncode == 0 else None)
 
     @classmethod
     def tearDownClass(cls):
         shutil.rmtree(cls.dir, ignore_errors=True)
 
     def setUp(self):
-        self.assertEqual(self.run.returncode, 0, self.run.stdout)
+        self.assertEqual(self.result.returncode, 0, self.result.stdout)
 
     def test_gauge_reads_the_still_level(self):
-        t, level = self.series["t"], self.series["level0"]
+        level = self.series["level0"]
         self.assertAlmostEqual(level[0], STILL_LEVEL, delta=0.02 * SPACING)
 
     def test_wave_height_is_biesels(self):
