@@ -43,7 +43,7 @@ void JaumannSolver::sort() {
       P.x,
       [&P](const std::vector<int>& order) {
         sph::permute(order, P.id, P.x, P.v, P.x0, P.rho, P.m, P.s, P.K, P.G, P.c, P.sigma_y,
-                     P.clamped, P.failed, P.inert, P.external_a);
+                     P.clamped, P.failed, P.inert, P.external_a, P.kick_a);
       },
       [&P](long i) { return !P.inert[i]; },
       [&P, whole](long i, int j) { return whole || j > i || P.inert[j]; });
