@@ -12,69 +12,54 @@
 
 namespace cosph::solid::jaumann {
 
+namespace {
+
+// Every array the next step reads, once for both directions (Particles is
+// const when saving).
+template <class Particles, class Visit>
+void visit_state(Particles& P, const Visit& visit) {
+  visit("id", P.id);
+  visit("x", P.x);
+  visit("v", P.v);
+  visit("x0", P.x0);
+  visit("rho", P.rho);
+  visit("m", P.m);
+  visit("s", P.s);
+  visit("K", P.K);
+  visit("G", P.G);
+  visit("c", P.c);
+  visit("sigma_y", P.sigma_y);
+  visit("clamped", P.clamped);
+  visit("failed", P.failed);
+  visit("inert", P.inert);
+  visit("external_a", P.external_a);
+  visit("kick_a", P.kick_a);
+  visit("p", P.p);
+  visit("sigma", P.sigma);
+  visit("R", P.R);
+  visit("L", P.L);
+  visit("sigma_L", P.sigma_L);
+  visit("a", P.a);
+  visit("drho", P.drho);
+  visit("volume", P.volume);
+  visit("inverse_rho", P.inverse_rho);
+  visit("ds", P.ds);
+}
+
+}  // namespace
+
 void JaumannSolver::save(sph::Checkpoint& checkpoint) const {
-  const JaumannParticles& P = particles_;
-  checkpoint.put("id", P.id);
-  checkpoint.put("x", P.x);
-  checkpoint.put("v", P.v);
-  checkpoint.put("x0", P.x0);
-  checkpoint.put("rho", P.rho);
-  checkpoint.put("m", P.m);
-  checkpoint.put("s", P.s);
-  checkpoint.put("K", P.K);
-  checkpoint.put("G", P.G);
-  checkpoint.put("c", P.c);
-  checkpoint.put("sigma_y", P.sigma_y);
-  checkpoint.put("clamped", P.clamped);
-  checkpoint.put("failed", P.failed);
-  checkpoint.put("inert", P.inert);
-  checkpoint.put("external_a", P.external_a);
-  checkpoint.put("p", P.p);
-  checkpoint.put("sigma", P.sigma);
-  checkpoint.put("R", P.R);
-  checkpoint.put("L", P.L);
-  checkpoint.put("sigma_L", P.sigma_L);
-  checkpoint.put("a", P.a);
-  checkpoint.put("drho", P.drho);
-  checkpoint.put("volume", P.volume);
-  checkpoint.put("inverse_rho", P.inverse_rho);
-  checkpoint.put("ds", P.ds);
+  visit_state(particles_, sph::CheckpointPut{checkpoint});
   checkpoint.put("x_at_sort", verlet_.x_at_sort());
-  checkpoint.put_value("time", time_);
-  checkpoint.put_count("steps", steps_);
+  sph::put_clock(checkpoint, time_, steps_);
 }
 
 void JaumannSolver::restore(const sph::Checkpoint& checkpoint) {
   JaumannParticles& P = particles_;
-  checkpoint.get("id", P.id);
-  checkpoint.get("x", P.x);
-  checkpoint.get("v", P.v);
-  checkpoint.get("x0", P.x0);
-  checkpoint.get("rho", P.rho);
-  checkpoint.get("m", P.m);
-  checkpoint.get("s", P.s);
-  checkpoint.get("K", P.K);
-  checkpoint.get("G", P.G);
-  checkpoint.get("c", P.c);
-  checkpoint.get("sigma_y", P.sigma_y);
-  checkpoint.get("clamped", P.clamped);
-  checkpoint.get("failed", P.failed);
-  checkpoint.get("inert", P.inert);
-  checkpoint.get("external_a", P.external_a);
-  checkpoint.get("p", P.p);
-  checkpoint.get("sigma", P.sigma);
-  checkpoint.get("R", P.R);
-  checkpoint.get("L", P.L);
-  checkpoint.get("sigma_L", P.sigma_L);
-  checkpoint.get("a", P.a);
-  checkpoint.get("drho", P.drho);
-  checkpoint.get("volume", P.volume);
-  checkpoint.get("inverse_rho", P.inverse_rho);
-  checkpoint.get("ds", P.ds);
+  visit_state(P, sph::CheckpointGet{checkpoint});
   std::vector<sph::Vec2> x_at_sort;
   checkpoint.get("x_at_sort", x_at_sort);
-  time_ = checkpoint.value("time");
-  steps_ = checkpoint.count("steps");
+  sph::take_clock(checkpoint, time_, steps_);
   if (P.id.size() != P.size() || P.a.size() != P.size() || x_at_sort.size() != P.size())
     throw std::runtime_error(checkpoint.path() + ": the solid's arrays differ in length");
   P.neighbours.resize(P.size());

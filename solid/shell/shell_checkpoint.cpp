@@ -8,32 +8,41 @@
 
 namespace cosph::solid::shell {
 
+namespace {
+
+// Every array the next step reads, once for both directions (Particles is
+// const when saving).
+template <class Particles, class Visit>
+void visit_state(Particles& P, const Visit& visit) {
+  visit("x", P.x);
+  visit("v", P.v);
+  visit("theta", P.theta);
+  visit("omega", P.omega);
+  visit("external_a", P.external_a);
+  visit("external_alpha", P.external_alpha);
+  visit("kick_a", P.kick_a);
+  visit("kick_alpha", P.kick_alpha);
+  visit("N", P.N);
+  visit("Q", P.Q);
+  visit("M", P.M);
+  visit("stress_dx_dS", P.stress.dx_dS);
+  visit("stress_kappa", P.stress.kappa);
+  visit("stress_N", P.stress.N);
+  visit("stress_Q", P.stress.Q);
+  visit("stress_M", P.stress.M);
+  visit("stress_n", P.stress.n);
+  visit("stress_couple", P.stress.couple);
+  visit("stress_strain_energy", P.stress.strain_energy);
+  visit("a", P.a);
+  visit("alpha", P.alpha);
+}
+
+}  // namespace
+
 void ShellSolver::save(sph::Checkpoint& checkpoint) const {
-  const ShellParticles& P = particles_;
-  checkpoint.put("id", P.id);
-  checkpoint.put("x", P.x);
-  checkpoint.put("v", P.v);
-  checkpoint.put("theta", P.theta);
-  checkpoint.put("omega", P.omega);
-  checkpoint.put("external_a", P.external_a);
-  checkpoint.put("external_alpha", P.external_alpha);
-  checkpoint.put("kick_a", P.kick_a);
-  checkpoint.put("kick_alpha", P.kick_alpha);
-  checkpoint.put("N", P.N);
-  checkpoint.put("Q", P.Q);
-  checkpoint.put("M", P.M);
-  checkpoint.put("stress_dx_dS", P.stress.dx_dS);
-  checkpoint.put("stress_kappa", P.stress.kappa);
-  checkpoint.put("stress_N", P.stress.N);
-  checkpoint.put("stress_Q", P.stress.Q);
-  checkpoint.put("stress_M", P.stress.M);
-  checkpoint.put("stress_n", P.stress.n);
-  checkpoint.put("stress_couple", P.stress.couple);
-  checkpoint.put("stress_strain_energy", P.stress.strain_energy);
-  checkpoint.put("a", P.a);
-  checkpoint.put("alpha", P.alpha);
-  checkpoint.put_value("time", time_);
-  checkpoint.put_count("steps", steps_);
+  checkpoint.put("id", particles_.id);
+  visit_state(particles_, sph::CheckpointPut{checkpoint});
+  sph::put_clock(checkpoint, time_, steps_);
 }
 
 void ShellSolver::restore(const sph::Checkpoint& checkpoint) {
@@ -42,29 +51,8 @@ void ShellSolver::restore(const sph::Checkpoint& checkpoint) {
   checkpoint.get("id", id);
   if (id != P.id)
     throw std::runtime_error(checkpoint.path() + ": the shell's particles are not the case's");
-  checkpoint.get("x", P.x);
-  checkpoint.get("v", P.v);
-  checkpoint.get("theta", P.theta);
-  checkpoint.get("omega", P.omega);
-  checkpoint.get("external_a", P.external_a);
-  checkpoint.get("external_alpha", P.external_alpha);
-  checkpoint.get("kick_a", P.kick_a);
-  checkpoint.get("kick_alpha", P.kick_alpha);
-  checkpoint.get("N", P.N);
-  checkpoint.get("Q", P.Q);
-  checkpoint.get("M", P.M);
-  checkpoint.get("stress_dx_dS", P.stress.dx_dS);
-  checkpoint.get("stress_kappa", P.stress.kappa);
-  checkpoint.get("stress_N", P.stress.N);
-  checkpoint.get("stress_Q", P.stress.Q);
-  checkpoint.get("stress_M", P.stress.M);
-  checkpoint.get("stress_n", P.stress.n);
-  checkpoint.get("stress_couple", P.stress.couple);
-  checkpoint.get("stress_strain_energy", P.stress.strain_energy);
-  checkpoint.get("a", P.a);
-  checkpoint.get("alpha", P.alpha);
-  time_ = checkpoint.value("time");
-  steps_ = checkpoint.count("steps");
+  visit_state(P, sph::CheckpointGet{checkpoint});
+  sph::take_clock(checkpoint, time_, steps_);
   if (P.x.size() != id.size() || P.alpha.size() != id.size())
     throw std::runtime_error(checkpoint.path() + ": the shell's arrays differ in length");
 }

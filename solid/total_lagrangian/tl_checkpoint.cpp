@@ -8,22 +8,32 @@
 
 namespace cosph::solid::tl {
 
+namespace {
+
+// Every array the next step reads, once for both directions (Particles is
+// const when saving).
+template <class Particles, class Visit>
+void visit_state(Particles& P, const Visit& visit) {
+  visit("x", P.x);
+  visit("v", P.v);
+  visit("external_a", P.external_a);
+  visit("kick_a", P.kick_a);
+  visit("F", P.F);
+  visit("J", P.J);
+  visit("rho", P.rho);
+  visit("P_L0", P.P_L0);
+  visit("sigma", P.sigma);
+  visit("sigma_zz", P.sigma_zz);
+  visit("strain_energy", P.strain_energy);
+  visit("a", P.a);
+}
+
+}  // namespace
+
 void TLSolver::save(sph::Checkpoint& checkpoint) const {
-  const TLParticles& P = particles_;
-  checkpoint.put("id", P.id);
-  checkpoint.put("x", P.x);
-  checkpoint.put("v", P.v);
-  checkpoint.put("external_a", P.external_a);
-  checkpoint.put("F", P.F);
-  checkpoint.put("J", P.J);
-  checkpoint.put("rho", P.rho);
-  checkpoint.put("P_L0", P.P_L0);
-  checkpoint.put("sigma", P.sigma);
-  checkpoint.put("sigma_zz", P.sigma_zz);
-  checkpoint.put("strain_energy", P.strain_energy);
-  checkpoint.put("a", P.a);
-  checkpoint.put_value("time", time_);
-  checkpoint.put_count("steps", steps_);
+  checkpoint.put("id", particles_.id);
+  visit_state(particles_, sph::CheckpointPut{checkpoint});
+  sph::put_clock(checkpoint, time_, steps_);
 }
 
 void TLSolver::restore(const sph::Checkpoint& checkpoint) {
@@ -32,19 +42,8 @@ void TLSolver::restore(const sph::Checkpoint& checkpoint) {
   checkpoint.get("id", id);
   if (id != P.id)
     throw std::runtime_error(checkpoint.path() + ": the solid's particles are not the case's");
-  checkpoint.get("x", P.x);
-  checkpoint.get("v", P.v);
-  checkpoint.get("external_a", P.external_a);
-  checkpoint.get("F", P.F);
-  checkpoint.get("J", P.J);
-  checkpoint.get("rho", P.rho);
-  checkpoint.get("P_L0", P.P_L0);
-  checkpoint.get("sigma", P.sigma);
-  checkpoint.get("sigma_zz", P.sigma_zz);
-  checkpoint.get("strain_energy", P.strain_energy);
-  checkpoint.get("a", P.a);
-  time_ = checkpoint.value("time");
-  steps_ = checkpoint.count("steps");
+  visit_state(P, sph::CheckpointGet{checkpoint});
+  sph::take_clock(checkpoint, time_, steps_);
   if (P.x.size() != id.size() || P.a.size() != id.size())
     throw std::runtime_error(checkpoint.path() + ": the solid's arrays differ in length");
 }

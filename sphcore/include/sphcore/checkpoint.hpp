@@ -110,6 +110,34 @@ concept Checkpointable = requires(Solver& solver, const Solver& done, Checkpoint
   solver.restore(in);
 };
 
+// A solver lists its state arrays once, as visit(name, array) calls, and
+// the list serves both directions: save() visits with CheckpointPut, restore()
+// with CheckpointGet (the solvers' *_checkpoint.cpp).
+struct CheckpointPut {
+  Checkpoint& checkpoint;
+  template <class T>
+  void operator()(const char* name, const std::vector<T>& values) const {
+    checkpoint.put(name, std::span<const T>(values));
+  }
+};
+struct CheckpointGet {
+  const Checkpoint& checkpoint;
+  template <class T>
+  void operator()(const char* name, std::vector<T>& values) const {
+    checkpoint.get(name, values);
+  }
+};
+
+// A solver's simulated time and step count.
+inline void put_clock(Checkpoint& checkpoint, double time, long steps) {
+  checkpoint.put_value("time", time);
+  checkpoint.put_count("steps", steps);
+}
+inline void take_clock(const Checkpoint& checkpoint, double& time, long& steps) {
+  time = checkpoint.value("time");
+  steps = checkpoint.count("steps");
+}
+
 // The output, snapshot and checkpoint intervals of a run: a resume keeps
 // those of the first run, even where their defaults follow a longer end time.
 inline void put_intervals(Checkpoint& checkpoint, const RunParameters& run) {
