@@ -6,6 +6,7 @@
 
 #include "coupler_session.hpp"
 #include "coupler_settings.hpp"
+#include "endpoint_safety.hpp"
 #include "participant/protocol.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/run_control.hpp"
@@ -22,7 +23,10 @@ int run(int argc, char** argv) {
   cosph::coupler::CouplerSettings settings = cosph::coupler::read_coupler_settings(case_file);
   sph::require(!args.endpoint.empty(), case_file, "--endpoint",
                "the coupler needs an endpoint to bind (ipc://PATH or tcp://HOST:PORT)");
+  cosph::coupler::check_bind_address(args.endpoint, args.bind_any);
   settings.endpoint = args.endpoint;
+  settings.keys = {args.key_file, args.coupler_key_file, args.allowed_key_files};
+  cosph::coupling::check_key_files(args.endpoint, settings.keys, /*coupler=*/true);
   settings.out_dir = args.out_dir;
   settings.checkpoints = {sph::run_identity(case_file), args.resume_from};
   std::cout << "cosph-coupler: sub-stepping: " << settings.stepping_reason << std::endl;

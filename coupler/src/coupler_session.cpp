@@ -5,15 +5,19 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <set>
 #include <sstream>
 
 #include "common_step.hpp"
+#include "endpoint_safety.hpp"
+#include "message_limits.hpp"
 #include "participant/bound_ipc_file.hpp"
 #include "participant/protocol.hpp"
 #include "sphcore/gauge.hpp"
 #include "sphcore/region.hpp"
 #include "sphcore/run_control.hpp"
 #include "sphcore/timeseries_writer.hpp"
+#include "zap_handler.hpp"
 
 namespace cosph::coupler {
 
@@ -28,6 +32,7 @@ const char* kSideName[2] = {"fluid", "solid"};
 struct Peer {
   std::string identity;
   std::string solver;
+  std::uint64_t particle_count = 0;  // announced in its Hello: its states' size limit
   double max_h = 0.0;
   sph::Region bounds;
   cp::InterfaceState state;
@@ -47,7 +52,18 @@ class Session {
     // so a peer that is gone cannot hold the coupler's exit.
     socket_.set(zmq::sockopt::linger, static_cast<int>(timeout_.count()));
     socket_.set(zmq::sockopt::router_mandatory, 1);
-    socket_.bind(settings.endpoint);
+    socket_.set(zmq::sockopt::maxmsgsize, static_cast<std::int64_t>(kSocketLimitBytes));
+    if (settings.keys.given()) {
+      cp::use_server_keys(socket_, settings.keys);
+      std::set<std::string> allowed;
+      for (const std::string& file : settings.keys.allowed)
+        allowed.insert(cp::read_public_key(file));
+      zap_.emplace(context_, std::move(allowed));
+    }
+    {
+      const PrivateUmask private_socket_file;  // an ipc:// socket only the user can connect to
+      socket_.bind(settings.endpoint);
+    }
     ipc_file_.bound(settings.endpoint);
   }
 
@@ -88,29 +104,86 @@ class Session {
     throw cp::CouplingError(message);
   }
 
+  // The next message of a registered solver, or a Hello from a peer that is
+  // not one yet. Anything else from a peer that is not one of the run's
+  // solvers is refused and logged, and the wait goes on: only a registered
+  // solver's malformed message stops the run.
   cp::Routed await(const std::string& waiting_for) {
     const auto deadline = Clock::now() + timeout_;
-    const auto start = Clock::now();
-    std::optional<cp::Routed> message;
-    try {
-      message = cp::receive_routed(
-          socket_, std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()));
-    } catch (const cp::CouplingError& error) {
-      fail(error.what());
-    }
-    wait_seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
-    if (!message && sph::stop_requested())
-      fail("the coupler was interrupted (Ctrl-C or SIGTERM): " + waiting_for);
-    if (!message)
-      fail(waiting_for + ": nothing within " + std::to_string(settings_.timeout_seconds) +
-           " s (the solver died, stalled, or never connected)");
-    if (message->envelope.has_error()) {
+    for (;;) {
+      const auto start = Clock::now();
+      std::optional<cp::RoutedFrame> message = cp::receive_routed_frame(
+          socket_,
+          std::max(std::chrono::milliseconds(0),
+                   std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now())));
+      wait_seconds_ += std::chrono::duration<double>(Clock::now() - start).count();
+      if (!message && sph::stop_requested())
+        fail("the coupler was interrupted (Ctrl-C or SIGTERM): " + waiting_for);
+      if (!message)
+        fail(waiting_for + ": nothing within " + std::to_string(settings_.timeout_seconds) +
+             " s (the solver died, stalled, or never connected)");
       const int side = side_of(message->identity);
-      const std::string who = side >= 0 ? kSideName[side] : "a peer";
-      fail(who + " stopped: " + message->envelope.error().message(), side);
+      const std::string sender =
+          side >= 0 ? "the " + std::string(kSideName[side]) + " ('" + peers_[side].solver + "')"
+                    : "a peer";
+      std::optional<cp::Envelope> envelope;
+      std::string problem = check_frame(*message, side, sender);
+      if (problem.empty()) {
+        try {
+          envelope = cp::parse(cp::bytes_of(message->frame), sender);
+        } catch (const cp::CouplingError& error) {
+          problem = error.what();
+        }
+      }
+      if (side >= 0) {
+        if (!problem.empty()) fail(problem);
+        if (envelope->has_error())
+          fail(std::string(kSideName[side]) + " stopped: " + envelope->error().message(), side);
+        // Moved, not copied: a state is some 100 kB of arrays.
+        return cp::Routed{std::move(message->identity), std::move(*envelope)};
+      }
+      if (problem.empty() && !envelope->has_hello())
+        problem = std::string(envelope->has_state() ? "a state" : "a message") +
+                  " from a peer that has not said Hello";
+      if (!problem.empty()) {
+        refuse(message->identity, problem);
+        continue;
+      }
+      return cp::Routed{std::move(message->identity), std::move(*envelope)};
     }
-    // Moved, not copied: a state is some 100 kB of arrays.
-    return std::move(*message);
+  }
+
+  // Why a message cannot be one of the protocol's, before it is parsed: one
+  // frame, no larger than a Hello from a peer that has not said one, or than
+  // a state of its particles from a registered solver.
+  std::string check_frame(const cp::RoutedFrame& message, int side,
+                          const std::string& sender) const {
+    if (message.frames != 1)
+      return "garbage from " + sender + ": a message of " + std::to_string(message.frames) +
+             " frames (the protocol sends one)";
+    const std::size_t limit =
+        side >= 0 ? largest_state_bytes(peers_[side].particle_count) : kLargestHelloBytes;
+    if (message.frame.size() > limit)
+      return sender + " sent a message of " + std::to_string(message.frame.size()) +
+             " bytes, over the limit of " + std::to_string(limit) + " bytes" +
+             (side >= 0 ? " for the " + std::to_string(peers_[side].particle_count) +
+                              " particles of its Hello"
+                        : " before a Hello is accepted");
+    return {};
+  }
+
+  // Logs that a peer was refused and tells it why, if it is still there; the
+  // run goes on.
+  void refuse(const std::string& identity, const std::string& reason) {
+    std::cerr << "cosph-coupler: refused a peer that is not one of the run's solvers: " << reason
+              << "; the run goes on" << std::endl;
+    cp::Envelope error;
+    error.mutable_error()->set_message(reason);
+    try {
+      cp::send_to(socket_, identity, error, zmq::send_flags::dontwait);
+    } catch (const zmq::error_t&) {
+      // gone already, or not reading: it has been refused all the same
+    }
   }
 
   int side_of(const std::string& identity) const {
@@ -122,29 +195,21 @@ class Session {
   void handshake() {
     while (peers_[kFluid].identity.empty() || peers_[kSolid].identity.empty()) {
       const cp::Routed message = await("waiting for the solvers to connect");
-      if (!message.envelope.has_hello()) {
-        // A solver of an earlier run on the same endpoint, still shutting
-        // down, may reach us: not one of ours, so not a reason to stop.
-        std::cerr << "cosph-coupler: ignoring a message from a peer that has not said Hello"
-                  << std::endl;
-        continue;
-      }
+      const int registered = side_of(message.identity);
+      if (registered >= 0)
+        fail("the " + std::string(kSideName[registered]) + " ('" + peers_[registered].solver +
+             "') sent the wrong message before the run began");
       const cp::Hello& hello = message.envelope.hello();
       const int side = hello.phase() == cp::SOLID ? kSolid : kFluid;
-      std::string problem = cp::check_hello(hello, side == kSolid ? cp::SOLID : cp::FLUID);
-      if (problem.empty()) problem = check_resumed_step(hello, side);
-      if (!problem.empty() || !peers_[side].identity.empty()) {
-        const std::string reason =
-            problem.empty() ? "a second " + std::string(kSideName[side]) + " solver connected"
-                            : problem;
-        cp::Envelope error;
-        error.mutable_error()->set_message(reason);
-        cp::send_to(socket_, message.identity, error);
-        fail("refused '" + hello.solver() + "': " + reason);
+      const std::string problem = check_hello(hello, side);
+      if (!problem.empty()) {
+        refuse(message.identity, problem);
+        continue;
       }
       Peer& peer = peers_[side];
       peer.identity = message.identity;
       peer.solver = hello.solver();
+      peer.particle_count = hello.particle_count();
       peer.max_h = hello.max_smoothing_length();
       peer.bounds = cp::from_proto(hello.bounds());
     }
@@ -156,6 +221,20 @@ class Session {
     }
     std::cout << "cosph-coupler: coupling '" << peers_[kFluid].solver << "' and '"
               << peers_[kSolid].solver << "' at " << settings_.endpoint << std::endl;
+  }
+
+  // Empty if the Hello may join the run as `side`, else the reason.
+  std::string check_hello(const cp::Hello& hello, int side) const {
+    std::string problem = cp::check_hello(hello, side == kSolid ? cp::SOLID : cp::FLUID);
+    if (problem.empty() && !peers_[side].identity.empty())
+      problem = "a second " + std::string(kSideName[side]) + " solver, '" + hello.solver() +
+                "' (the run's is '" + peers_[side].solver + "')";
+    if (problem.empty() && hello.particle_count() > kLargestParticleCount)
+      problem = "'" + hello.solver() + "' announced " + std::to_string(hello.particle_count()) +
+                " particles, more than the coupler takes (" +
+                std::to_string(kLargestParticleCount) + ")";
+    if (problem.empty()) problem = check_resumed_step(hello, side);
+    return problem;
   }
 
   // The three parts of a checkpoint are taken at one coupling step.
@@ -194,7 +273,11 @@ class Session {
                                                                : "solid";
       cp::Routed message = await("step " + std::to_string(step) + ", waiting for the " + missing);
       const int side = side_of(message.identity);
-      if (side < 0) fail("a message from an unknown peer");
+      if (side < 0) {  // a Hello, once both solvers are in
+        const cp::Hello& hello = message.envelope.hello();
+        refuse(message.identity, check_hello(hello, hello.phase() == cp::SOLID ? kSolid : kFluid));
+        continue;
+      }
       if (!message.envelope.has_state())
         fail(std::string(kSideName[side]) + " sent the wrong message at step " +
              std::to_string(step));
@@ -443,6 +526,7 @@ class Session {
   std::chrono::milliseconds timeout_;
   cp::BoundIpcFile ipc_file_;  // before the context: destroyed after it
   zmq::context_t context_{1};
+  std::optional<ZapHandler> zap_;  // before the socket: it answers for it until it is closed
   zmq::socket_t socket_{context_, zmq::socket_type::router};
   std::array<Peer, 2> peers_;
   std::optional<sph::TimeSeriesWriter> timeseries_, coupling_;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cross_phase_forces.hpp"
+#include "participant/curve_keys.hpp"
 #include "sphcore/checkpoint.hpp"
 #include "sphcore/run_parameters.hpp"
 
@@ -13,6 +14,7 @@ namespace cosph::coupler {
 
 struct CouplerSettings {
   std::string endpoint;
+  coupling::CurveKeyFiles keys;  // none: no CURVE (ipc:// only)
   std::string out_dir;
   sph::RunParameters run;
   CrossPhaseParameters cross_phase;

@@ -41,6 +41,7 @@ using sph::Vec2;
 
 struct DummyOptions {
   std::string phase, endpoint, out_dir;
+  std::string keys, coupler_key;  // CURVE key files, over tcp://
   long particles = 200;
   double dt = 0.0;   // 0: 1e-3 s for the fluid, 1.5e-3 s for the solid
   double end = 1.0;  // s, for progress and snapshots only: the coupler ends the run
@@ -59,14 +60,17 @@ struct DummyOptions {
 const char* kUsage =
     "usage: cosph-dummy --phase fluid|solid --endpoint E --out DIR [--particles N] [--dt DT]\n"
     "       [--end T] [--spacing DX] [--motion V] [--stress P] [--timeout S]\n"
-    "       [--acceleration A] [--send-acceleration 0|1]\n"
+    "       [--acceleration A] [--send-acceleration 0|1] [--keys FILE --coupler-key FILE]\n"
     "       [--busy-ms W] [--busy-parity 0|1]\n"
     "       [--die-at-step K] [--hang-at-step K] [--garbage-at-step K] [--version V]";
 
 DummyOptions parse_options(int argc, char** argv) {
   DummyOptions o;
-  const std::map<std::string, std::string*> texts{
-      {"--phase", &o.phase}, {"--endpoint", &o.endpoint}, {"--out", &o.out_dir}};
+  const std::map<std::string, std::string*> texts{{"--phase", &o.phase},
+                                                  {"--endpoint", &o.endpoint},
+                                                  {"--out", &o.out_dir},
+                                                  {"--keys", &o.keys},
+                                                  {"--coupler-key", &o.coupler_key}};
   const std::map<std::string, double*> numbers{
       {"--dt", &o.dt},           {"--end", &o.end},
       {"--spacing", &o.spacing}, {"--motion", &o.motion},
@@ -256,9 +260,10 @@ int run(int argc, char** argv) {
   if (o.version >= 0 || o.garbage_at >= 0) return run_misbehaving(o, solver);
   const sph::RunParameters run{o.end, o.end, o.end, 0.25, Vec2::Zero(), 1};
   const cp::PhaseKind phase = o.phase == "fluid" ? cp::PhaseKind::fluid : cp::PhaseKind::solid;
-  cp::CoupledRun<DummySolver> coupled(solver, run,
-                                      {o.out_dir, "dummy_" + o.phase, phase,
-                                       "cosph-dummy (" + o.phase + ")", o.endpoint, o.timeout});
+  cp::CoupledRun<DummySolver> coupled(
+      solver, run,
+      {o.out_dir, "dummy_" + o.phase, phase, "cosph-dummy (" + o.phase + ")", o.endpoint, o.timeout,
+       cp::CurveKeyFiles{o.keys, o.coupler_key, {}}});
   return coupled.run();
 }
 

@@ -19,6 +19,7 @@ struct Participant::Impl {
   std::size_t sent = 0;    // particles in the last state: the answer has one entry for each
   double waited = 0.0;     // s, in await_step, sent with every state
   bool came_last = false;  // in the last step: this solver sets the pace
+  bool keyed = false;      // CURVE: a wrong coupler key shows only as silence
 
   // The solver that sets the pace has its answer within a round trip (about
   // 0.1 ms) and the coupler's pair forces: it polls for this long before its
@@ -34,16 +35,20 @@ struct Participant::Impl {
       throw CouplingError(std::string("interrupted (Ctrl-C or SIGTERM) while waiting for ") +
                           expected);
     if (!reply)
-      throw CouplingError("the coupler at " + endpoint + " did not answer within " +
-                          std::to_string(static_cast<double>(timeout.count()) / 1000.0) +
-                          " s (waiting for " + expected + ")");
+      throw CouplingError(
+          "the coupler at " + endpoint + " did not answer within " +
+          std::to_string(static_cast<double>(timeout.count()) / 1000.0) + " s (waiting for " +
+          expected + ")" +
+          (keyed ? "; is --coupler-key the public key of this run's coupler?" : ""));
     if (reply->has_error()) throw CouplingError("coupler: " + reply->error().message());
     return *reply;
   }
 };
 
-Participant::Participant(const std::string& endpoint, double timeout_seconds)
+Participant::Participant(const std::string& endpoint, double timeout_seconds,
+                         const CurveKeyFiles& keys)
     : impl_(std::make_unique<Impl>()) {
+  check_key_files(endpoint, keys, /*coupler=*/false);
   // The coupler restarts its own timeout when the other solver's message arrives,
   // after this solver has started waiting: a solver that waited only as long would
   // always give up first and blame the coupler for a peer that died. The grace
@@ -52,6 +57,8 @@ Participant::Participant(const std::string& endpoint, double timeout_seconds)
   impl_->timeout = std::chrono::milliseconds(static_cast<long>(1000.0 * (timeout_seconds + grace)));
   impl_->endpoint = endpoint;
   impl_->socket.set(zmq::sockopt::linger, 0);  // never hang on exit over unsent messages
+  use_client_keys(impl_->socket, keys);
+  impl_->keyed = keys.given();
   try {
     impl_->socket.connect(endpoint);
   } catch (const zmq::error_t& error) {

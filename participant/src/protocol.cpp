@@ -139,19 +139,20 @@ zmq::message_t frame_of(const Envelope& envelope) {
   envelope.SerializeWithCachedSizesToArray(static_cast<std::uint8_t*>(frame.data()));
   return frame;
 }
+}  // namespace
 
 std::string_view bytes_of(const zmq::message_t& frame) {
   return {static_cast<const char*>(frame.data()), frame.size()};
 }
-}  // namespace
 
 void send(zmq::socket_t& socket, const Envelope& envelope) {
   socket.send(frame_of(envelope), zmq::send_flags::none);
 }
 
-void send_to(zmq::socket_t& socket, const std::string& identity, const Envelope& envelope) {
-  socket.send(zmq::buffer(identity), zmq::send_flags::sndmore);
-  socket.send(frame_of(envelope), zmq::send_flags::none);
+void send_to(zmq::socket_t& socket, const std::string& identity, const Envelope& envelope,
+             zmq::send_flags flags) {
+  socket.send(zmq::buffer(identity), zmq::send_flags::sndmore | flags);
+  socket.send(frame_of(envelope), flags);
 }
 
 namespace {
@@ -207,17 +208,30 @@ std::optional<Envelope> receive(zmq::socket_t& socket, std::chrono::milliseconds
   return parse(bytes_of(frame), from);
 }
 
-std::optional<Routed> receive_routed(zmq::socket_t& socket, std::chrono::milliseconds timeout) {
+std::optional<RoutedFrame> receive_routed_frame(zmq::socket_t& socket,
+                                                std::chrono::milliseconds timeout) {
   if (!wait_readable(socket, timeout)) return std::nullopt;
-  zmq::message_t identity, frame;
+  zmq::message_t identity;
   (void)socket.recv(identity, zmq::recv_flags::none);
-  if (!identity.more()) throw CouplingError("garbage: a message without a routing frame");
-  (void)socket.recv(frame, zmq::recv_flags::none);
-  if (frame.more()) {
-    while (frame.more()) (void)socket.recv(frame, zmq::recv_flags::none);
-    throw CouplingError("garbage: a message of more than one frame");
+  RoutedFrame out{identity.to_string(), {}, 0};
+  if (!identity.more()) return out;  // a ROUTER always adds the routing frame
+  (void)socket.recv(out.frame, zmq::recv_flags::none);
+  out.frames = 1;
+  for (bool more = out.frame.more(); more; ++out.frames) {
+    zmq::message_t extra;
+    (void)socket.recv(extra, zmq::recv_flags::none);
+    more = extra.more();
   }
-  return Routed{identity.to_string(), parse(bytes_of(frame), "a peer")};
+  return out;
+}
+
+std::optional<Routed> receive_routed(zmq::socket_t& socket, std::chrono::milliseconds timeout) {
+  std::optional<RoutedFrame> message = receive_routed_frame(socket, timeout);
+  if (!message) return std::nullopt;
+  if (message->frames != 1)
+    throw CouplingError("garbage: a message of " + std::to_string(message->frames) +
+                        " frames, not one");
+  return Routed{message->identity, parse(bytes_of(message->frame), "a peer")};
 }
 
 }  // namespace cosph::coupling

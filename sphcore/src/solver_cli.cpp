@@ -13,20 +13,31 @@ SolverArgs parse_solver_args(int argc, char** argv, const std::string& program,
                              const std::string& summary) {
   const std::string usage =
       "usage: " + program +
-      " --case FILE --out DIR [--set FIELD=VALUE ...] [--endpoint E] [--resume FILE]";
+      " --case FILE --out DIR [--set FIELD=VALUE ...] [--endpoint E] [--resume FILE]"
+      " [--keys FILE] [--coupler-key FILE] [--allow-key FILE ...] [--bind-any]";
   SolverArgs args;
   for (int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
     if (option == "--help" || option == "-h") {
-      std::cout << usage << "\n\n"
-                << summary << "\n\n"
-                << "  --case FILE          case file (protobuf text format, proto/case.proto)\n"
-                << "  --out DIR            output folder (created if missing)\n"
-                << "  --set FIELD=VALUE    override a case field, e.g. fluid.spacing=0.004\n"
-                << "  --endpoint E         coupler endpoint (ipc:// or tcp://); none: run alone\n"
-                << "  --resume FILE        continue from this checkpoint (docs/restart.md)\n"
-                << "\nUsually started by the launcher: coupler/cosph run CASE --out DIR\n";
+      std::cout
+          << usage << "\n\n"
+          << summary << "\n\n"
+          << "  --case FILE          case file (protobuf text format, proto/case.proto)\n"
+          << "  --out DIR            output folder (created if missing)\n"
+          << "  --set FIELD=VALUE    override a case field, e.g. fluid.spacing=0.004\n"
+          << "  --endpoint E         coupler endpoint (ipc:// or tcp://); none: run alone\n"
+          << "  --resume FILE        continue from this checkpoint (docs/restart.md)\n"
+          << "  --keys FILE          this process's CURVE key pair (cosph-keys), over tcp://\n"
+          << "  --coupler-key FILE   a solver: the coupler's public key, over tcp://\n"
+          << "  --allow-key FILE     the coupler: a solver's public key; one per solver\n"
+          << "  --bind-any           the coupler: listen on a wildcard address such as\n"
+          << "                       tcp://0.0.0.0:PORT (every network interface)\n"
+          << "\nUsually started by the launcher: coupler/cosph run CASE --out DIR\n";
       std::exit(0);
+    }
+    if (option == "--bind-any") {
+      args.bind_any = true;
+      continue;
     }
     if (i + 1 >= argc) throw ConfigError(program + ": " + option + " needs a value\n" + usage);
     const std::string value = argv[++i];
@@ -40,6 +51,12 @@ SolverArgs parse_solver_args(int argc, char** argv, const std::string& program,
       args.endpoint = value;
     else if (option == "--resume")
       args.resume_from = value;
+    else if (option == "--keys")
+      args.key_file = value;
+    else if (option == "--coupler-key")
+      args.coupler_key_file = value;
+    else if (option == "--allow-key")
+      args.allowed_key_files.push_back(value);
     else
       throw ConfigError(program + ": unknown option " + option + "\n" + usage);
   }

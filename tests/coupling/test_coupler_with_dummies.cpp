@@ -387,7 +387,9 @@ TEST_F(CouplerWithDummies, GarbageFromASolverEndsTheRun) {
   auto solid = start_dummy("solid", {"--garbage-at-step", "3"});
   const auto deadline = Clock::now() + 8s;
   EXPECT_EQ(coupler->wait_until(deadline), 1) << coupler->err();
-  EXPECT_TRUE(contains(coupler->err(), "garbage")) << coupler->err();
+  // The run stops, naming the solver whose message it was.
+  EXPECT_TRUE(contains(coupler->err(), "garbage from the solid ('cosph-dummy (solid)')"))
+      << coupler->err();
   EXPECT_EQ(fluid->wait_until(deadline), 1) << fluid->err();
   EXPECT_TRUE(contains(fluid->err(), "garbage")) << fluid->err();
   EXPECT_EQ(solid->wait_until(deadline), 1) << solid->err();
@@ -443,6 +445,8 @@ TEST_F(CouplerWithDummies, ASolidWithoutAccelerationCouplesWithOneWarning) {
   }
 }
 
+// The coupler refuses the solver, tells it why and logs it, but waits on for
+// a solver it can take (test_rogue_peers): here none comes, and it gives up.
 TEST_F(CouplerWithDummies, AnotherProtocolVersionIsRefused) {
   write_case(3.0);
   auto coupler = start_coupler();

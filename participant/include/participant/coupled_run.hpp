@@ -51,6 +51,7 @@ struct CoupledRunSettings {
   std::string solver_description;
   std::string endpoint;
   double timeout_seconds;
+  CurveKeyFiles keys = {};  // over tcp://
 };
 
 // The sub-steps a solver takes to cover the coupler's window with steps no
@@ -68,7 +69,7 @@ class CoupledRun {
         run_(run),
         settings_(std::move(settings)),
         snapshots_(settings_.out_dir, settings_.name),
-        participant_(settings_.endpoint, settings_.timeout_seconds) {}
+        participant_(settings_.endpoint, settings_.timeout_seconds, settings_.keys) {}
 
   // After every step, threads.revise(): the thread count follows the free cores.
   void revise_threads_with(sph::RunThreads& threads) { threads_ = &threads; }

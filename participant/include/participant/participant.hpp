@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "participant/curve_keys.hpp"
 #include "sphcore/gauge.hpp"
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/region.hpp"
@@ -32,7 +33,8 @@ class Participant {
   // Connects to the coupler at `endpoint` (ipc:// or tcp://). Every later
   // receive waits at most timeout_seconds plus a grace (max(1 s, 25 %)) before
   // throwing CouplingError, so that the coupler's own timeout fires first.
-  Participant(const std::string& endpoint, double timeout_seconds);
+  // Over tcp:// the keys are required (sph::ConfigError without them).
+  Participant(const std::string& endpoint, double timeout_seconds, const CurveKeyFiles& keys = {});
   ~Participant();
   Participant(const Participant&) = delete;
   Participant& operator=(const Participant&) = delete;

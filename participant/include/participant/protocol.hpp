@@ -63,7 +63,9 @@ Envelope parse(std::string_view bytes, const std::string& from);
 // stop is requested (sph::stop_requested()), they wait at most a second more:
 // the caller tells which.
 void send(zmq::socket_t& socket, const Envelope& envelope);
-void send_to(zmq::socket_t& socket, const std::string& identity, const Envelope& envelope);
+// dontwait: drop the message rather than wait for a peer that does not read.
+void send_to(zmq::socket_t& socket, const std::string& identity, const Envelope& envelope,
+             zmq::send_flags flags = zmq::send_flags::none);
 // `spin`: how long to poll, yielding the core between polls, before the
 // thread sleeps until the message comes (zero: sleep at once). An answer
 // expected within a round trip or two is picked up without waking a sleeping
@@ -76,6 +78,20 @@ struct Routed {
   std::string identity;
   Envelope envelope;
 };
+// Throws CouplingError for a message that is not one frame holding an Envelope.
 std::optional<Routed> receive_routed(zmq::socket_t& socket, std::chrono::milliseconds timeout);
+
+// A routed message as it came, not parsed yet: the coupler checks its size
+// and its sender before it parses it. `frames` counts the frames after the
+// routing frame (the protocol sends one; the rest are read and dropped).
+struct RoutedFrame {
+  std::string identity;
+  zmq::message_t frame;
+  int frames = 0;
+};
+std::optional<RoutedFrame> receive_routed_frame(zmq::socket_t& socket,
+                                                std::chrono::milliseconds timeout);
+// What a frame holds, for parse().
+std::string_view bytes_of(const zmq::message_t& frame);
 
 }  // namespace cosph::coupling

@@ -22,8 +22,10 @@ int run_solver(Solver& solver, const sph::RunParameters& run, const sph::CaseFil
                const std::string& description, sph::RunThreads& threads) {
   if (!args.endpoint.empty()) {
     const double timeout = coupling_timeout_seconds(case_file);
-    CoupledRun<Solver> coupled(solver, run,
-                               {args.out_dir, name, phase, description, args.endpoint, timeout});
+    CoupledRun<Solver> coupled(
+        solver, run,
+        {args.out_dir, name, phase, description, args.endpoint, timeout,
+         CurveKeyFiles{args.key_file, args.coupler_key_file, args.allowed_key_files}});
     coupled.revise_threads_with(threads);
     coupled.checkpoint_with({sph::run_identity(case_file), args.resume_from});
     return coupled.run();

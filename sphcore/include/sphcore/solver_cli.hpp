@@ -1,5 +1,6 @@
 // The command line every cosph executable shares:
-//   EXE --case FILE --out DIR [--set FIELD=VALUE ...] [--endpoint E] [--resume FILE] [--help]
+//   EXE --case FILE --out DIR [--set FIELD=VALUE ...] [--endpoint E] [--resume FILE]
+//       [--keys FILE] [--coupler-key FILE] [--allow-key FILE ...] [--bind-any] [--help]
 // and the outermost error handling: bad input exits 2, a failed run exits 1,
 // each with one line "EXE: error: ..." on stderr.
 #pragma once
@@ -16,6 +17,11 @@ struct SolverArgs {
   std::vector<std::string> overrides;
   std::string endpoint;     // empty: run alone
   std::string resume_from;  // a checkpoint (docs/restart.md); empty: from the start
+  bool bind_any = false;    // the coupler may listen on a wildcard tcp address
+  // CURVE key files for tcp:// (participant/curve_keys.hpp): this process's
+  // pair; a solver's: the coupler's public key; the coupler's: its solvers'.
+  std::string key_file, coupler_key_file;
+  std::vector<std::string> allowed_key_files;
 };
 
 // Throws ConfigError on a malformed command line. Prints help and exits 0 on --help.
