@@ -12,9 +12,9 @@ from .errors import EXIT_BAD_INPUT, EXIT_FAILURE, EXIT_INTERRUPTED, EXIT_OK, Exi
 from .locate import (BUILD_HINT, available_cases, bin_dir, check_sets, find_exe, repo_dir,
                      resolve_case)
 from .output_dir import prepare_out_dir
-from .plan import (check_endpoint, child_commands, core_placement, default_endpoint, pinning_pays,
-                   run_plan)
+from .plan import check_endpoint, child_commands, core_placement, pinning_pays, run_plan
 from .resume import check_resume_sets, last_complete_checkpoint, recorded_run
+from .security import check_bind, default_endpoint, make_private_dir, with_key_args
 from .supervise import Child, Run, SignalState
 
 def print_summary(out, wall_s, children):
@@ -63,8 +63,12 @@ def build_parser(repo):
     run.add_argument("--set", action="append", default=[], metavar="FIELD=VALUE",
                      help="override a case field; may be repeated")
     run.add_argument("--endpoint", metavar="E",
-                     help="coupling endpoint for multi-process runs "
-                          "(default ipc://DIR/coupler.sock)")
+                     help="coupling endpoint for multi-process runs (default "
+                          "ipc://DIR/private/coupler.sock); tcp://HOST:PORT runs with fresh "
+                          "CURVE keys in DIR/private (docs/coupling.md, \"Two hosts\")")
+    run.add_argument("--bind-any", action="store_true",
+                     help="let the coupler listen on a wildcard address such as "
+                          "tcp://0.0.0.0:PORT (every network interface)")
     run.add_argument("--quiet", action="store_true", help="show no progress")
     pin = run.add_mutually_exclusive_group()
     pin.add_argument("--no-pin", action="store_true",
@@ -150,7 +154,8 @@ def cmd_resume(args, repo, signals, run_parser):
     checkpoints = last_complete_checkpoint(out, names)
     endpoint = recorded.endpoint or default_endpoint(out)
     commands = [cmd + ["--resume", str(checkpoints[name])] for name, cmd in
-                zip(names, child_commands(names, folder, case, out, sets, endpoint))]
+                zip(names, with_key_args(child_commands(names, folder, case, out, sets, endpoint),
+                                         names, out, endpoint, recorded.bind_any))]
     emit(sys.stderr, f"cosph: resuming {out} from {checkpoints[names[0]].name.split('_')[-1][:-3]}"
                      f" ({', '.join(str(p.name) for p in checkpoints.values())})\n")
     try:
@@ -159,8 +164,10 @@ def cmd_resume(args, repo, signals, run_parser):
     except OSError as err:
         raise UsageError(f"cannot record the resume in {out / 'command.txt'}: {err}") from err
     args.no_pin = args.pin = False
-    return start_and_supervise(args, out, names, commands, separate_cores, signals,
-                               on_cores=lambda placement: None)
+    return start_and_supervise(
+        args, out, names, commands, separate_cores, signals,
+        on_cores=lambda placement: len(names) > 1 and make_private_dir(out, folder, endpoint,
+                                                                       names))
 
 
 def cmd_run(args, repo, signals):
@@ -175,13 +182,18 @@ def cmd_run(args, repo, signals):
     endpoint = args.endpoint or default_endpoint(out)
     if len(names) > 1:
         check_endpoint(endpoint)
+        check_bind(endpoint, args.bind_any)
     elif args.endpoint:
         emit(sys.stderr, f"cosph: note: --endpoint is not used, {names[0]} runs alone\n")
-    commands = child_commands(names, folder, case, out, args.set, endpoint)
-    return start_and_supervise(
-        args, out, names, commands, separate_cores, signals,
-        on_cores=lambda placement: prepare_out_dir(out, case, plan_cmd, commands,
-                                                   [placement.get(n) for n in names]))
+    commands = with_key_args(child_commands(names, folder, case, out, args.set, endpoint),
+                             names, out, endpoint, args.bind_any)
+
+    def prepare(placement):
+        prepare_out_dir(out, case, plan_cmd, commands, [placement.get(n) for n in names])
+        if len(names) > 1:
+            make_private_dir(out, folder, endpoint, names)
+    return start_and_supervise(args, out, names, commands, separate_cores, signals,
+                               on_cores=prepare)
 
 
 def start_and_supervise(args, out, names, commands, separate_cores, signals, on_cores):

@@ -109,10 +109,6 @@ def pinning_pays(cores):
                           len(cores))
 
 
-def default_endpoint(out):
-    return f"ipc://{out}/coupler.sock"
-
-
 def check_endpoint(endpoint):
     # Unix socket paths are limited to 107 bytes; ZeroMQ's own error for a
     # longer one ("File name too long") does not say what to do about it.

@@ -99,6 +99,21 @@ class LauncherTest(unittest.TestCase):
     def fake_args(self, name):
         return json.loads((self.state / f"{name}.args").read_text())
 
+    def bin_with_real_keys(self):
+        """COSPH_BIN for a tcp run: the fakes, and the built cosph-keys that
+        makes the run's keys (skips without a build, fails if
+        COSPH_TEST_BIN names one without it)."""
+        real = Path(os.environ.get("COSPH_TEST_BIN", HERE.parent.parent / "build" / "bin"))
+        if not os.access(real / "cosph-keys", os.X_OK):
+            if os.environ.get("COSPH_TEST_BIN"):
+                self.fail(f"{real / 'cosph-keys'} is missing")
+            self.skipTest(f"no built {real / 'cosph-keys'}; set COSPH_TEST_BIN")
+        folder = self.tmp / "bin"
+        if not folder.exists():
+            shutil.copytree(FAKE_BIN, folder, symlinks=True)
+            (folder / "cosph-keys").symlink_to((real / "cosph-keys").resolve())
+        return str(folder)
+
     def wait_for_pids(self, names, timeout=5.0):
         deadline = time.monotonic() + timeout
         while time.monotonic() < deadline:
@@ -164,10 +179,12 @@ class LauncherTest(unittest.TestCase):
         for name in THREE.split():
             args = self.fake_args(name)
             self.assertEqual(args[args.index("--endpoint") + 1],
-                             f"ipc://{self.out}/coupler.sock")
+                             f"ipc://{self.out}/private/coupler.sock")
             self.assertEqual(args[4:8], ["--set", "a=1", "--set", "b.c=x y"])
         self.assertEqual(json.loads((self.state / "plan.args").read_text())[2:],
                          ["--set", "a=1", "--set", "b.c=x y"])
+        # The socket's folder is the user's alone, whatever the umask.
+        self.assertEqual((self.out / "private").stat().st_mode & 0o777, 0o700)
         self.assert_all_gone(3)
 
     def test_summary_gives_each_process_its_cpu_time(self):
@@ -226,6 +243,40 @@ class LauncherTest(unittest.TestCase):
         self.assertEqual(rc, 0, err)
         self.assertEqual(self.fake_args("cosph-solid-jaumann")[-2:],
                          ["--endpoint", "tcp://127.0.0.1:5555"])
+
+    def test_tcp_run_gets_fresh_keys_only_the_user_can_read(self):
+        keys = self.out / "private"
+        seen = set()
+        for _ in range(2):
+            rc, _, err = self.run_case("--endpoint", "tcp://127.0.0.1:5555",
+                                       FAKE_PLAN=THREE, FAKE_STEPS="2",
+                                       COSPH_BIN=self.bin_with_real_keys())
+            self.assertEqual(rc, 0, err)
+            coupler = self.fake_args("cosph-coupler")
+            self.assertEqual(coupler[coupler.index("--keys"):],
+                             ["--keys", f"{keys}/coupler.key", "--allow-key", f"{keys}/fluid.pub",
+                              "--allow-key", f"{keys}/solid.pub"])
+            solid = self.fake_args("cosph-solid-jaumann")
+            self.assertEqual(solid[solid.index("--keys"):],
+                             ["--keys", f"{keys}/solid.key", "--coupler-key", f"{keys}/coupler.pub"])
+            self.assertEqual(keys.stat().st_mode & 0o777, 0o700)
+            for name in ("coupler", "fluid", "solid"):
+                for suffix in (".key", ".pub"):
+                    self.assertEqual((keys / (name + suffix)).stat().st_mode & 0o777, 0o600)
+            seen.add((keys / "coupler.pub").read_text())
+        self.assertEqual(len(seen), 2, "a run reused the keys of the one before")
+
+    def test_wildcard_address_needs_bind_any(self):
+        rc, _, err = self.run_case("--endpoint", "tcp://0.0.0.0:5555", FAKE_PLAN=THREE)
+        self.assertEqual(rc, 2, err)
+        self.assertIn("--endpoint tcp://0.0.0.0:5555 listens on every network interface", err)
+        self.assertIn("--bind-any", err)
+        self.assertFalse((self.state / "cosph-coupler.args").exists())
+        rc, _, err = self.run_case("--endpoint", "tcp://0.0.0.0:5555", "--bind-any",
+                                   FAKE_PLAN=THREE, FAKE_STEPS="2",
+                                   COSPH_BIN=self.bin_with_real_keys())
+        self.assertEqual(rc, 0, err)
+        self.assertEqual(self.fake_args("cosph-coupler")[-1], "--bind-any")
 
     def test_quiet_shows_no_progress(self):
         rc, _, err = self.run_case("--quiet", FAKE_STEPS="4")

@@ -70,7 +70,7 @@ class ThirdPartySolid(FakeProgramsWithRealCase, unittest.TestCase):
         self.assertEqual(self.started(), ["cosph-coupler", "cosph-fluid", "my-solid"])
         args = json.loads((self.state / "my-solid.args").read_text())
         self.assertEqual(args[:4], ["--case", str(case), "--out", str(self.out)])
-        self.assertEqual(args[-2:], ["--endpoint", f"ipc://{self.out}/coupler.sock"])
+        self.assertEqual(args[-2:], ["--endpoint", f"ipc://{self.out}/private/coupler.sock"])
         self.assertIn(str(program), (self.out / "command.txt").read_text())
 
     def test_program_on_path_and_by_relative_path(self):
