@@ -39,7 +39,10 @@ struct Participant::Impl {
           "the coupler at " + endpoint + " did not answer within " +
           std::to_string(static_cast<double>(timeout.count()) / 1000.0) + " s (waiting for " +
           expected + ")" +
-          (keyed ? "; is --coupler-key the public key of this run's coupler?" : ""));
+          (keyed ? "; over tcp the coupler is silent to a solver it does not take: is "
+                   "--coupler-key its public key, and was this solver's --keys "
+                   "given to it with --allow-key?"
+                 : ""));
     if (reply->has_error()) throw CouplingError("coupler: " + reply->error().message());
     return *reply;
   }
