@@ -113,3 +113,42 @@ TEST(RoguePeers, AreRefusedAndLoggedWhileTheRunGoesOn) {
 }
 
 }  // namespace
+
+namespace {
+
+// A registered solver is held to the size of its own Hello: a state of more
+// particles than it announced stops the run, naming it.
+TEST(RoguePeers, ARegisteredSolversOversizedStateStopsTheRunNamingIt) {
+  CoupledProcesses run("oversized_state");
+  run.write_case(5.0);
+  const std::string endpoint = run.ipc_endpoint();
+  auto coupler = run.start_coupler(endpoint);
+  zmq::context_t context;
+  std::vector<zmq::socket_t> solvers;
+  for (const cp::Phase phase : {cp::FLUID, cp::SOLID}) {
+    zmq::socket_t& socket = solvers.emplace_back(context, zmq::socket_type::dealer);
+    socket.set(zmq::sockopt::linger, 0);
+    socket.connect(endpoint);
+    cp::send(socket, hello_of(phase, "the test's " + std::string(cp::phase_name(phase))));
+  }
+  for (zmq::socket_t& socket : solvers)  // once both Hellos are in
+    ASSERT_TRUE(cp::receive(socket, 5000ms, "the coupler").value().has_welcome());
+  // hello_of announces 10 particles; this state carries 10000.
+  cp::Envelope state;
+  state.mutable_state()->set_proposed_dt(1e-3);
+  state.mutable_state()->set_max_smoothing_length(1e-3);
+  state.mutable_state()->mutable_position()->Resize(20000, 0.0);
+  cp::send(solvers[0], state);
+  EXPECT_EQ(coupler->wait_until(Clock::now() + 10s), 1) << coupler->err();
+  EXPECT_NE(coupler->err().find("the fluid ('the test's fluid') sent a message of"),
+            std::string::npos)
+      << coupler->err();
+  EXPECT_NE(coupler->err().find("for the 10 particles of its Hello"), std::string::npos)
+      << coupler->err();
+  // The other solver hears why.
+  const std::optional<cp::Envelope> error = cp::receive(solvers[1], 5000ms, "the coupler");
+  ASSERT_TRUE(error && error->has_error());
+  EXPECT_NE(error->error().message().find("the fluid ('the test's fluid')"), std::string::npos);
+}
+
+}  // namespace
