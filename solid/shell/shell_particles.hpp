@@ -59,7 +59,7 @@ struct ShellParticles {
   std::vector<Vec2> external_a;
   std::vector<double> external_alpha;
   // The total accelerations of the last closing kick (own and imposed; zero
-  // for clamped): what the faces' accelerations sent to the coupler are made of.
+  // for clamped): what the interface particles' accelerations sent to the coupler are made of.
   std::vector<Vec2> kick_a;
   std::vector<double> kick_alpha;
 

@@ -118,12 +118,12 @@ void ShellSolver::end_step(double dt) {
 }
 
 void ShellSolver::collect_interface(const sph::Region& region, sph::InterfaceParticles& out) {
-  faces_.collect(particles_, forces_.section, forces_.phi0, parameters_.h, parameters_.dx, region,
-                 out);
+  interface_.collect(particles_, forces_.section, forces_.phi0, parameters_.h, parameters_.dx,
+                     region, out);
 }
 
 void ShellSolver::set_interface_accelerations(const std::vector<Vec2>& accelerations) {
-  faces_.scatter(accelerations, particles_);
+  interface_.scatter(accelerations, particles_);
 }
 
 sph::Region ShellSolver::interaction_bounds() const {
@@ -131,7 +131,8 @@ sph::Region ShellSolver::interaction_bounds() const {
   sph::Region bounds;
   for (std::size_t i = 0; i < P.size(); ++i)
     for (const int side : {+1, -1})
-      bounds.include(P.x[i] + ShellFaces::offset(forces_.section, forces_.phi0 + P.theta[i], side));
+      bounds.include(P.x[i] +
+                     ShellInterface::face_offset(forces_.section, forces_.phi0 + P.theta[i], side));
   return bounds;
 }
 

@@ -6,7 +6,7 @@
 // strain (reissner_beam.hpp, shell_section.hpp), in total-Lagrangian SPH along
 // the reference line with its strains at stress points between neighbours
 // (shell_dynamics.hpp): Wu, Zhang & Hu 2024 (J. Comput. Phys. 113113)
-// reduced to a line. The water sees both faces (shell_faces.hpp).
+// reduced to a line. The water sees the section filled with particles (shell_interface.hpp).
 //
 // Step from t to t + dt, kick-drift-kick on position and rotation alike:
 //   v += dt/2 a, omega += dt/2 alpha;  x += dt v, theta += dt omega;
@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "shell_dynamics.hpp"
-#include "shell_faces.hpp"
+#include "shell_interface.hpp"
 #include "shell_line.hpp"
 #include "shell_particles.hpp"
 #include "solid_gauges.hpp"
@@ -82,7 +82,7 @@ class ShellSolver : public sph::ParticleSolver<ShellSolver, ShellParticles, Soli
 
   ShellLine line_;
   ShellForceParameters forces_;
-  ShellFaces faces_;
+  ShellInterface interface_;
   std::optional<EndLoad> end_load_;
   std::vector<int> tip_ids_;
 };

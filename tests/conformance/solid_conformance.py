@@ -14,8 +14,9 @@ cosph-solid-tl, "shell" for cosph-solid-shell, otherwise the field is left out).
 (reduced-dimension: one line of particles on the mid-line; default for
 solid.model "shell"): the free bar 5 mm thick and standing 40 mm tall, the
 cantilever 5 mm thick and 8 times stiffer (the same deflection). Such a solid
-has round(length / spacing) + 1 particles along its mid-line and presents two
-interface particles (one per face) for each.
+has round(length / spacing) + 1 particles along its mid-line and presents its
+section filled with interface particles, round(thickness / spacing) across for
+each (as a continuum body of that spacing would).
 
 The solid under test runs against cosph-coupler and a cosph-dummy fluid: a
 block of particles left of x = 0 with a prescribed uniform stress -P I and no
@@ -246,9 +247,11 @@ def solid_particles(box, dx=DX):
 
 
 def interface_particles(box, dx=DX):
-    """How many interface particles the whole body presents: with --thin, two
-    faces for each mid-line particle."""
-    return (2 if THIN else 1) * solid_particles(box, dx)
+    """How many interface particles the whole body presents: with --thin, the
+    section filled, round(thickness / spacing) across each mid-line particle."""
+    (x0, y0, x1, y1) = box
+    across = max(1, int(round(min(x1 - x0, y1 - y0) / dx))) if THIN else 1
+    return across * solid_particles(box, dx)
 
 
 def lattice(box, dx=DX):

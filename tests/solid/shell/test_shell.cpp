@@ -1,5 +1,5 @@
 // The reduced-dimension shell (solid/shell): the thin-box rule refuses a thick
-// body, the faces the water sees (geometry, and forces back as force and
+// body, the section the water sees (geometry, and forces back as force and
 // moment), no zero-energy mode, and the Antoci plate's first-mode period at 8
 // particles along.
 #include <gtest/gtest.h>
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "bending_mode.hpp"
-#include "shell_faces.hpp"
+#include "shell_interface.hpp"
 #include "shell_solver.hpp"
 #include "solid_test_cases.hpp"
 
@@ -76,9 +76,14 @@ solid {
   }
 }
 
-TEST(Shell, FacesLieOnBothSurfacesAndMoveWithTheSection) {
-  ShellSolver solver = solver_of(plate_case("shell_faces", 8));
+// At 48 particles along (dx = 1.65 mm) the 5 mm section holds three layers.
+constexpr int kAlongForLayers = 48, kLayers = 3;
+
+TEST(Shell, InterfaceFillsTheSectionAndMovesWithIt) {
+  ShellSolver solver = solver_of(plate_case("shell_interface", kAlongForLayers));
   ShellParticles& P = solver.particles();
+  ASSERT_EQ(ShellInterface::layers(solver.force_parameters().section, solver.parameters().dx),
+            kLayers);
   const int i = 8;  // a free particle
   ASSERT_FALSE(P.clamped[i]);
   P.theta[i] = 0.7;
@@ -87,38 +92,50 @@ TEST(Shell, FacesLieOnBothSurfacesAndMoveWithTheSection) {
   solver.update();
   sph::InterfaceParticles out;
   solver.collect_interface(sph::Region::everything(), out);
-  ASSERT_EQ(out.size(), 2 * P.size());
+  ASSERT_EQ(out.size(), kLayers * P.size());
   const Vec2 d(-std::sin(0.7), std::cos(0.7));  // the director, turned with the section
+  double mass = 0.0, volume = 0.0;
+  int seen = 0;
   for (std::size_t k = 0; k < out.size(); ++k) {
-    if (out.id[k] / 2 != P.id[i]) continue;
-    const double side = out.id[k] % 2 == 0 ? 1.0 : -1.0;
-    const Vec2 r = side * 0.5 * kT * d;
+    if (out.id[k] / kLayers != P.id[i]) continue;
+    ++seen;
+    const int layer = static_cast<int>(out.id[k] % kLayers);
+    // Half a layer inside the faces, a layer apart: -t/3, 0, t/3.
+    const Vec2 r = (layer - 1) * (kT / 3.0) * d;
     EXPECT_LT((out.x[k] - (P.x[i] + r)).norm(), 1e-15);
     EXPECT_LT((out.v[k] - (P.v[i] + 3.0 * Vec2(-r.y(), r.x()))).norm(), 1e-14);
-    EXPECT_NEAR(out.m[k], 0.5 * P.m[i], 1e-15);
-    // The water sees one layer of wall particles at the solid's spacing.
-    EXPECT_NEAR(out.m[k] / out.rho[k], P.V[i] * solver.parameters().dx, 1e-15);
+    mass += out.m[k];
+    volume += out.m[k] / out.rho[k];
   }
+  EXPECT_EQ(seen, kLayers);
+  // Together the section: the particle's mass and the volume of its length of plate.
+  EXPECT_NEAR(mass, P.m[i], 1e-15);
+  EXPECT_NEAR(volume, P.V[i] * kT, 1e-15);
 }
 
-// Face accelerations for a traction (Pa) on the +d faces, the -d faces or both.
+// Accelerations for a traction (Pa) on the outer layer of the +d side, of
+// the -d side, or both.
 std::vector<Vec2> tractions(const sph::InterfaceParticles& out, const ShellParticles& P,
                             const Vec2& on_plus, const Vec2& on_minus) {
-  std::vector<Vec2> a(out.size());
+  std::vector<Vec2> a(out.size(), Vec2::Zero());
   for (std::size_t k = 0; k < out.size(); ++k) {
-    const std::size_t i = static_cast<std::size_t>(out.id[k] / 2);
-    const Vec2 traction = out.id[k] % 2 == 0 ? on_plus : on_minus;
-    a[k] = traction * P.V[i] / out.m[k];  // force = traction x face length
+    const std::size_t i = static_cast<std::size_t>(out.id[k] / kLayers);
+    const long layer = out.id[k] % kLayers;
+    if (layer == kLayers - 1) a[k] = on_plus * P.V[i] / out.m[k];  // force = traction x length
+    if (layer == 0) a[k] = on_minus * P.V[i] / out.m[k];
   }
   return a;
 }
 
-TEST(Shell, FaceForcesReturnAsForceAndMoment) {
-  ShellSolver solver = solver_of(plate_case("shell_face_forces", 8));
+TEST(Shell, InterfaceForcesReturnAsForceAndMoment) {
+  ShellSolver solver = solver_of(plate_case("shell_interface_forces", kAlongForLayers));
   const ShellParticles& P = solver.particles();
   sph::InterfaceParticles out;
   solver.collect_interface(sph::Region::everything(), out);
-  const double p = 250.0, tau = 40.0, length = kL + 4 * kL / 8;  // Pa, Pa, m
+  const double p = 250.0, tau = 40.0;  // Pa
+  double length = 0.0;                 // of the whole line, clamp included, m
+  for (const double V : P.V) length += V;
+  const double z_outer = kT / 3.0;  // the outer layers' offset from the mid-line
   auto totals = [&](const std::vector<Vec2>& a) {
     solver.set_interface_accelerations(a);
     Vec2 F = Vec2::Zero();
@@ -131,24 +148,24 @@ TEST(Shell, FaceForcesReturnAsForceAndMoment) {
     }
     return std::tuple{F, M, M_origin};
   };
-  // Pressure p on both faces (pushing in: -p on the +y face, +p on the -y face).
+  // Pressure p on both sides (pushing in: -p on the +y side, +p on the -y side).
   auto [F, M, M0] = totals(tractions(out, P, Vec2(0, -p), Vec2(0, p)));
   EXPECT_LT(F.norm(), 1e-12);
   EXPECT_NEAR(M, 0.0, 1e-15);
   EXPECT_NEAR(M0, 0.0, 1e-12);
-  // On the upper face only: force p L down, no moment about the mid-line, and
+  // On the upper side only: force p L down, no moment about the mid-line, and
   // about the origin the moment of a uniform load on [x0, L].
   std::tie(F, M, M0) = totals(tractions(out, P, Vec2(0, -p), Vec2::Zero()));
   EXPECT_NEAR(F.y(), -p * length, 1e-9 * p * length);
   EXPECT_NEAR(F.x(), 0.0, 1e-12);
   EXPECT_NEAR(M, 0.0, 1e-15);
-  const double x0 = -4 * kL / 8;
+  const double x0 = kL - length;
   EXPECT_NEAR(M0, -p * 0.5 * (kL * kL - x0 * x0), 1e-9 * p * kL * kL);
-  // A shear traction tau along +x on the upper face turns the section
-  // clockwise: moment -tau t/2 per unit length.
+  // A shear traction tau along +x on the upper layer turns the section
+  // clockwise: moment -tau z per unit length, z the layer's offset.
   std::tie(F, M, M0) = totals(tractions(out, P, Vec2(tau, 0), Vec2::Zero()));
   EXPECT_NEAR(F.x(), tau * length, 1e-9 * tau * length);
-  EXPECT_NEAR(M, -tau * 0.5 * kT * length, 1e-9 * tau * kT * length);
+  EXPECT_NEAR(M, -tau * z_outer * length, 1e-9 * tau * kT * length);
 }
 
 // A zigzag of the deflection, of the rotation or along the line costs strain
