@@ -55,7 +55,9 @@ def case_results():
                or first(table_rows("elastic_plate"), {"run": "cosph, multi-rate, max_substeps 32"}))
     khayyer = first(table_rows("elastic_plate"), {"run": "Khayyer"})
     fracture = first(table_rows("plate_fracture"), {"run": "synchronised"})
-    flume = table_rows("wave_flume")
+    # The case as it runs: its own settings at its default spacing, 10 mm.
+    flume = [row for row in table_rows("wave_flume")
+             if row.get("run") == "the case" and row.get("spacing (mm)") == "10"]
 
     def text(row, make):
         return make(row) if row else missing
@@ -82,7 +84,7 @@ def case_results():
          "validation.md#fracture-the-plate-broken-by-the-flow-scene-3"),
         ("[wave flume](cases/wave_flume.pbtxt)", "a piston wave maker, waves down a flume",
          text(flume, lambda rows: "wave height against Biesel's linear theory: " + ", ".join(
-             f"{r['error']} at T = {r['period T (s)']} s" for r in rows)),
+             f"{r['error']} at T = {r['period T (s)']} s" for r in rows) + " at 10 mm"),
          "validation.md#wave-flume-a-piston-wave-maker"),
     ]
     lines = ["| case | what | result | details |", "|---|---|---|---|"]

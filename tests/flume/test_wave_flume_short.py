@@ -5,9 +5,11 @@ default's particles), one period, T = 1 s, through the launcher. Asserts
 - the level gauge reads the still level at the start within 2 % of a spacing:
   at 20 mm the water box's 12.5 rows round to 13, so the lattice's top edge,
   the still level, is 0.26 m;
-- waves arrive, between half and 105 % of Biesel's height: at this spacing
-  the waves are less than a spacing high and measured 28 % low at T = 1 s
-  (docs/validation.md, "Wave flume"); the bound is loose on purpose.
+- waves arrive, between 80 and 105 % of Biesel's height for that depth: at
+  this spacing the waves are less than a spacing high and measured 5 % low
+  (docs/validation.md, "Wave flume"); with the previous settings (cubic
+  spline, whose particles pair up over these seconds) they were 30 % low,
+  which the bound refuses.
 """
 import os
 import shutil
@@ -55,8 +57,8 @@ class WaveFlumeShort(unittest.TestCase):
         self.assertGreaterEqual(self.t_to - self.t_from, 2 * PERIOD)
         height, _ = wt.first_harmonic_height(self.series["t"], self.series["level0"], PERIOD,
                                              self.t_from, self.t_to)
-        theory = wt.biesel_height_over_stroke(PERIOD, DEPTH) * STROKE
-        self.assertTrue(0.5 <= height / theory <= 1.05,
+        theory = wt.biesel_height_over_stroke(PERIOD, STILL_LEVEL) * STROKE
+        self.assertTrue(0.8 <= height / theory <= 1.05,
                         msg=f"H = {1e3 * height:.2f} mm, Biesel {1e3 * theory:.2f} mm")
 
 
