@@ -254,7 +254,10 @@ std::string Checkpoint::write(const std::string& out_dir, const std::string& nam
     std::remove(partial.c_str());
     throw;
   }
-  if (H5Fclose(file) < 0) throw std::runtime_error(partial + ": cannot finish checkpoint file");
+  if (H5Fclose(file) < 0) {
+    std::remove(partial.c_str());
+    throw std::runtime_error(partial + ": cannot finish checkpoint file (disk full?)");
+  }
   sync_path(partial, O_RDONLY);
   if (std::rename(partial.c_str(), path.c_str()) != 0)
     throw std::runtime_error(path +

@@ -3,12 +3,12 @@
 #include <hdf5.h>
 
 #include <cstdio>
-#include <fstream>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
 
 #include "sphcore/checkpoint.hpp"
+#include "sphcore/whole_file.hpp"
 
 namespace sph {
 
@@ -141,9 +141,15 @@ void write_connectivity(hid_t file, std::size_t size, const std::string& path) {
 void SnapshotWriter::write_file(const Snapshot& snapshot, double time,
                                 const std::string& path) const {
   H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // we report errors ourselves
-  const std::string partial = path + ".partial";
-  const hid_t file = H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file < 0) throw std::runtime_error(partial + ": cannot create HDF5 file");
+  // The file is built in memory and written whole (write_whole_file): HDF5
+  // writing to a full disk itself left a file it could not close, and the
+  // library crashed at exit closing it again.
+  const hid_t access = H5Pcreate(H5P_FILE_ACCESS);
+  H5Pset_fapl_core(access, 1 << 20, 0);  // grown in 1 MiB steps, no backing file
+  const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access);
+  H5Pclose(access);
+  if (file < 0) throw std::runtime_error(path + ": cannot create HDF5 file in memory");
+  std::string image;
   try {
     write_dataset(file, "/position", snapshot.positions(), snapshot.size(), 3, path);
     write_connectivity(file, snapshot.size(), path);
@@ -159,19 +165,23 @@ void SnapshotWriter::write_file(const Snapshot& snapshot, double time,
     H5Awrite(attribute, H5T_NATIVE_DOUBLE, &time);
     H5Aclose(attribute);
     H5Sclose(scalar);
+    const ssize_t size =
+        H5Fflush(file, H5F_SCOPE_GLOBAL) < 0 ? -1 : H5Fget_file_image(file, nullptr, 0);
+    if (size < 0) throw std::runtime_error(path + ": cannot build HDF5 file");
+    image.resize(static_cast<std::size_t>(size));
+    if (H5Fget_file_image(file, image.data(), image.size()) != size)
+      throw std::runtime_error(path + ": cannot build HDF5 file");
   } catch (...) {
     H5Fclose(file);
     throw;
   }
-  if (H5Fclose(file) < 0 || std::rename(partial.c_str(), path.c_str()) != 0)
-    throw std::runtime_error(path + ": cannot finish HDF5 file");
+  H5Fclose(file);
+  write_whole_file(path, image);
 }
 
 void SnapshotWriter::write_index() const {
-  const std::string path = out_dir_ + "/" + name_ + ".xdmf";
-  const std::string partial = path + ".partial";
+  std::ostringstream out;
   {
-    std::ofstream out(partial);
     out.precision(12);
     out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
         << "  <Grid Name=\"" << name_
@@ -204,10 +214,9 @@ void SnapshotWriter::write_index() const {
       out << "   </Grid>\n";
     }
     out << "  </Grid>\n </Domain>\n</Xdmf>\n";
-    if (!out) throw std::runtime_error(partial + ": cannot write XDMF index");
   }
-  if (std::rename(partial.c_str(), path.c_str()) != 0)
-    throw std::runtime_error(path + ": cannot write XDMF index");
+  // Whole or not at all: a full disk must not replace the good index with a torn one.
+  write_whole_file(out_dir_ + "/" + name_ + ".xdmf", out.str());
 }
 
 }  // namespace sph
