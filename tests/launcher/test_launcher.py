@@ -383,6 +383,15 @@ class LauncherTest(unittest.TestCase):
         rc, _, err = self.run_case("--overwrite", FAKE_STEPS="2")
         self.assertEqual(rc, 0, err)
 
+    def test_a_resume_into_a_running_folder_is_refused(self):
+        first = self.launch("run", "dam_break", "--out", str(self.out), FAKE_HANG="cosph-fluid")
+        self.wait_for_pids(["cosph-fluid"])
+        rc, _, err = self.cosph("resume", str(self.out))
+        os.killpg(first.pid, signal.SIGINT)
+        first.communicate(timeout=15)
+        self.assertEqual(rc, 2, err)
+        self.assertIn(f"{self.out} is in use by another run (pid {first.pid}, started ", err)
+
     def test_a_folder_with_an_earlier_run_is_refused_without_overwrite(self):
         rc, _, err = self.run_case(FAKE_STEPS="2")
         self.assertEqual(rc, 0, err)
