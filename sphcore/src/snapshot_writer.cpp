@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "hdf5_in_memory.hpp"
 #include "sphcore/checkpoint.hpp"
 #include "sphcore/whole_file.hpp"
 
@@ -140,15 +141,8 @@ void write_connectivity(hid_t file, std::size_t size, const std::string& path) {
 
 void SnapshotWriter::write_file(const Snapshot& snapshot, double time,
                                 const std::string& path) const {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // we report errors ourselves
-  // The file is built in memory and written whole (write_whole_file): HDF5
-  // writing to a full disk itself left a file it could not close, and the
-  // library crashed at exit closing it again.
-  const hid_t access = H5Pcreate(H5P_FILE_ACCESS);
-  H5Pset_fapl_core(access, 1 << 20, 0);  // grown in 1 MiB steps, no backing file
-  const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access);
-  H5Pclose(access);
-  if (file < 0) throw std::runtime_error(path + ": cannot create HDF5 file in memory");
+  // Built in memory, written whole (hdf5_in_memory.hpp).
+  const hid_t file = create_in_memory(path);
   std::string image;
   try {
     write_dataset(file, "/position", snapshot.positions(), snapshot.size(), 3, path);
@@ -165,12 +159,7 @@ void SnapshotWriter::write_file(const Snapshot& snapshot, double time,
     H5Awrite(attribute, H5T_NATIVE_DOUBLE, &time);
     H5Aclose(attribute);
     H5Sclose(scalar);
-    const ssize_t size =
-        H5Fflush(file, H5F_SCOPE_GLOBAL) < 0 ? -1 : H5Fget_file_image(file, nullptr, 0);
-    if (size < 0) throw std::runtime_error(path + ": cannot build HDF5 file");
-    image.resize(static_cast<std::size_t>(size));
-    if (H5Fget_file_image(file, image.data(), image.size()) != size)
-      throw std::runtime_error(path + ": cannot build HDF5 file");
+    image = image_of(file, path);
   } catch (...) {
     H5Fclose(file);
     throw;

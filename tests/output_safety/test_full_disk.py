@@ -38,12 +38,12 @@ class FullDiskKeepsFilesWhole(unittest.TestCase):
     def tearDown(self):
         shutil.rmtree(self.out, ignore_errors=True)
 
-    def run_fluid(self, limit):
+    def run_fluid(self, limit, checkpoint_interval=-1):
         return subprocess.run(
             [os.path.join(BIN, "cosph-fluid"), "--case", os.path.join(REPO, "cases",
                                                                        "dam_break.pbtxt"),
              "--out", self.out, "--set", "run.end_time=0.1", "--set", "run.snapshot_interval=0.001",
-             "--set", "run.checkpoint_interval=-1"],
+             "--set", f"run.checkpoint_interval={checkpoint_interval}"],
             stdin=subprocess.DEVNULL, capture_output=True, text=True, timeout=600,
             preexec_fn=limit_file_size(limit), restore_signals=False)
 
@@ -71,6 +71,15 @@ class FullDiskKeepsFilesWhole(unittest.TestCase):
         self.assertIn(f"{self.out}/fluid.xdmf: cannot write it (File too large)", proc.stderr)
         self.assert_whole()
         self.assertGreater(len(glob.glob(os.path.join(self.out, "fluid_0*.h5"))), 50)
+
+    def test_a_checkpoint_that_does_not_fit(self):
+        # A checkpoint holds every array: larger than a snapshot, past the limit.
+        proc = self.run_fluid(150_000, checkpoint_interval=0.05)
+        self.assertEqual(proc.returncode, 1, proc.stderr)   # not SIGSEGV at exit
+        self.assertRegex(proc.stderr, rf"{self.out}/checkpoints/fluid_\d+\.h5: cannot write it "
+                                      r"\(File too large\)")
+        self.assert_whole()
+        self.assertEqual(os.listdir(os.path.join(self.out, "checkpoints")), [])
 
     def test_a_snapshot_that_does_not_fit(self):
         proc = self.run_fluid(100_000)
