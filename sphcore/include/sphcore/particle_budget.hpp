@@ -9,16 +9,16 @@
 
 namespace sph {
 
-// The default of run.max_particles: 10 GB at kBytesPerParticle, within a
+// The default of run.max_particles: 15 GB at kBytesPerParticle, within a
 // workstation's memory; the largest case shipped, finest spacing, has some
 // 10^5 particles.
 inline constexpr double kDefaultMaxParticles = 5e6;
 
 // Memory of one particle in a solver, all its arrays, neighbour list, cell
-// grid and snapshot copy: cosph-fluid's peak resident size grew by 1.64 kB a
-// particle from the dam break at 1 mm spacing (47 822 particles, 94 MB) to
-// 0.5 mm (177 454, 302 MB); rounded up.
-inline constexpr double kBytesPerParticle = 2048.0;
+// grid, snapshot copy and the in-memory image of a checkpoint: cosph-fluid's
+// peak resident size grew by 2.40 kB a particle from the dam break at 1 mm
+// spacing (47 822 particles, 118 MB) to 0.5 mm (177 454, 421 MB); rounded up.
+inline constexpr double kBytesPerParticle = 3072.0;
 
 struct ParticleEstimate {
   double particles;  // an upper bound: each region's bounding box / spacing^2
