@@ -262,7 +262,7 @@ std::string Checkpoint::write(const std::string& out_dir, const std::string& nam
     throw;
   }
   H5Fclose(file);
-  write_whole_file(path, image);
+  write_whole_file(path, image, Sync::to_disk);
   sync_path(folder, O_RDONLY | O_DIRECTORY);
 
   // Keep the newest two complete ones; a .partial is a write that never finished.

@@ -30,12 +30,12 @@ int write_all(int fd, const std::string& text) {
 
 }  // namespace
 
-void write_whole_file(const std::string& path, const std::string& text) {
+void write_whole_file(const std::string& path, const std::string& text, Sync sync) {
   const std::string partial = path + ".partial";
   const int fd = ::open(partial.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
   if (fd < 0) throw std::runtime_error(partial + ": cannot create it: " + system_reason(errno));
   int failure = write_all(fd, text);
-  if (failure == 0 && ::fsync(fd) != 0) failure = errno;
+  if (failure == 0 && sync == Sync::to_disk && ::fsync(fd) != 0) failure = errno;
   if (::close(fd) != 0 && failure == 0) failure = errno;
   if (failure == 0 && std::rename(partial.c_str(), path.c_str()) != 0) failure = errno;
   if (failure != 0) {
