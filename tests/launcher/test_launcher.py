@@ -251,7 +251,7 @@ class LauncherTest(unittest.TestCase):
         keys = self.out / "private"
         seen = set()
         for _ in range(2):
-            rc, _, err = self.run_case("--endpoint", "tcp://127.0.0.1:5555",
+            rc, _, err = self.run_case("--endpoint", "tcp://127.0.0.1:5555", "--overwrite",
                                        FAKE_PLAN=THREE, FAKE_STEPS="2",
                                        COSPH_BIN=self.bin_with_real_keys())
             self.assertEqual(rc, 0, err)
