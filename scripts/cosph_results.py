@@ -43,7 +43,8 @@ def reference(name):
 
 def run_case(case, out_dir, settings=(), timeout=3600):
     """Runs a case with the launcher; returns the wall time in seconds."""
-    command = [os.path.join(REPO, "coupler", "cosph"), "run", case, "--out", out_dir, "--quiet"]
+    command = [os.path.join(REPO, "coupler", "cosph"), "run", case, "--out", out_dir, "--quiet",
+               "--overwrite"]  # the script's own folder: its earlier run there goes
     for setting in settings:
         command += ["--set", setting]
     start = time.monotonic()

@@ -12,7 +12,7 @@ cmake --build --preset release -j2
 # plate table has its measured wall time, and that of synchronised steps
 # (--set coupling.max_substeps=1).
 echo "quickstart: running the coupled elastic plate (cases/elastic_plate.pbtxt) to t = 0.4 s"
-coupler/cosph run elastic_plate --out out/quickstart
+coupler/cosph run elastic_plate --out out/quickstart --overwrite
 echo "quickstart: open out/quickstart/fluid.xdmf and solid.xdmf in ParaView; tip displacement and water level are in out/quickstart/timeseries.csv"
 echo "quickstart: drawing the run (coupler/cosph plot out/quickstart):"
 coupler/cosph plot out/quickstart

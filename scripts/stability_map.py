@@ -67,6 +67,7 @@ def launch(case, out, settings, end_time):
             wall, output, code = float(log.readline()), log.read(), None
         return summarise(out, output, wall, code, " ".join([case] + settings))
     command = [os.path.join(cr.REPO, "coupler", "cosph"), "run", case, "--out", out, "--quiet",
+               "--overwrite",
                "--set", f"run.end_time={end_time}", "--set", f"run.snapshot_interval={end_time}"]
     for setting in settings:
         command += ["--set", setting]

@@ -11,7 +11,7 @@ from .console import Console, emit, fmt_duration, fmt_size
 from .errors import EXIT_BAD_INPUT, EXIT_FAILURE, EXIT_INTERRUPTED, EXIT_OK, Exit, Interrupted, UsageError
 from .locate import (BUILD_HINT, available_cases, bin_dir, check_sets, find_exe, repo_dir,
                      resolve_case)
-from .output_dir import prepare_out_dir
+from .output_dir import clear_earlier_output, lock_out_dir, prepare_out_dir
 from .plan import check_endpoint, child_commands, core_placement, pinning_pays, run_plan
 from .resume import check_resume_sets, last_complete_checkpoint, recorded_run
 from .security import check_bind, default_endpoint, make_private_dir, with_key_args
@@ -59,7 +59,11 @@ def build_parser(repo):
     run.add_argument("case", metavar="CASE",
                      help="case file, or the name of a case in cases/ (e.g. dam_break)")
     run.add_argument("--out", required=True, metavar="DIR",
-                     help="output folder (created if needed)")
+                     help="output folder (created if needed); one an earlier run wrote "
+                          "to is refused unless --overwrite is given")
+    run.add_argument("--overwrite", action="store_true",
+                     help="remove the files an earlier run wrote to --out (its snapshots, "
+                          "CSVs, checkpoints, plots; no other file) before this run starts")
     run.add_argument("--set", action="append", default=[], metavar="FIELD=VALUE",
                      help="override a case field; may be repeated")
     run.add_argument("--endpoint", metavar="E",
@@ -143,6 +147,7 @@ def cmd_resume(args, repo, signals, run_parser):
     check_resume_sets(args.set)
     out = Path(os.path.abspath(os.path.expanduser(args.dir)))
     recorded = recorded_run(out, run_parser)
+    lock = lock_out_dir(out, shlex.join(sys.argv))  # noqa: F841 (held until the run ends)
     case = out / "case.pbtxt"
     if not case.is_file():
         raise UsageError(f"{case}: missing: is {out} the output folder of a cosph run?")
@@ -185,6 +190,8 @@ def cmd_run(args, repo, signals):
         check_bind(endpoint, args.bind_any)
     elif args.endpoint:
         emit(sys.stderr, f"cosph: note: --endpoint is not used, {names[0]} runs alone\n")
+    lock = lock_out_dir(out, shlex.join(sys.argv))  # noqa: F841 (held until the run ends)
+    clear_earlier_output(out, case, args.overwrite)
     commands = with_key_args(child_commands(names, folder, case, out, args.set, endpoint),
                              names, out, endpoint, args.bind_any)
 

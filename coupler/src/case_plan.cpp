@@ -21,6 +21,7 @@
 #include "fluid_scene.hpp"
 #include "solid_executable.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/particle_budget.hpp"
 #include "sphcore/region_reader.hpp"
 #include "sphcore/run_parameters.hpp"
 #include "sphcore/solver_cli.hpp"
@@ -62,6 +63,7 @@ int plan(int argc, char** argv) {
   const bool fluid = case_file.config.has_fluid(), solid = case_file.config.has_solid();
   sph::require(fluid || solid, case_file, "fluid, solid", "the case has neither");
   sph::check_regions(case_file);
+  sph::check_particle_budget(case_file);
   if (fluid) {
     const auto parameters = cosph::fluid::read_fluid_parameters(case_file);
     cosph::fluid::check_walls_close(case_file, parameters);

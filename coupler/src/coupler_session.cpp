@@ -62,9 +62,19 @@ class Session {
     }
     {
       const PrivateUmask private_socket_file;  // an ipc:// socket only the user can connect to
-      socket_.bind(settings.endpoint);
+      bind_endpoint(settings.endpoint);
     }
     ipc_file_.bound(settings.endpoint);
+  }
+
+  // ZeroMQ's own error ("Permission denied") names neither the endpoint nor its file.
+  void bind_endpoint(const std::string& endpoint) {
+    try {
+      socket_.bind(endpoint);
+    } catch (const zmq::error_t& error) {
+      throw cp::CouplingError("cannot bind the coupling endpoint " + endpoint + ": " +
+                              error.what());
+    }
   }
 
   int run() {

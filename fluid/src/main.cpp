@@ -8,6 +8,7 @@
 #include "fluid_solver.hpp"
 #include "participant/run_solver.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/particle_budget.hpp"
 #include "sphcore/run_threads.hpp"
 #include "sphcore/solver_cli.hpp"
 
@@ -20,6 +21,7 @@ int run_fluid(int argc, char** argv) {
       argc, argv, "cosph-fluid", "Weakly compressible SPH water solver (docs/physics.md).");
   const sph::CaseFile case_file = sph::load_case(args.case_path, args.overrides);
   const auto parameters = cosph::fluid::read_fluid_parameters(case_file);
+  sph::check_particle_budget(case_file);
   const bool coupled = !args.endpoint.empty();
   sph::require(coupled || !case_file.config.has_solid(), case_file, "solid",
                "this case is coupled: run it with coupler/cosph, which starts the coupler");

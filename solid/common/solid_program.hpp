@@ -14,6 +14,7 @@
 #include "participant/run_solver.hpp"
 #include "solid_parameters.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/particle_budget.hpp"
 #include "sphcore/run_threads.hpp"
 #include "sphcore/solver_cli.hpp"
 
@@ -40,6 +41,7 @@ int run_solid_program(int argc, char** argv, const SolidProgram<Solver>& program
     const sph::CaseFile case_file = sph::load_case(args.case_path, args.overrides);
     const SolidParameters parameters = read_solid_parameters(case_file);
     require_model(case_file, parameters, program.model);
+    sph::check_particle_budget(case_file);
     const bool coupled = !args.endpoint.empty();
     sph::require(coupled || !case_file.config.has_fluid(), case_file, "fluid",
                  "this case is coupled: run it with coupler/cosph, which starts the coupler");

@@ -4,7 +4,9 @@
 #include <google/protobuf/stubs/logging.h>
 #include <google/protobuf/text_format.h>
 
+#include <cmath>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 namespace sph {
@@ -34,6 +36,48 @@ std::string known_fields(const pb::Descriptor& descriptor) {
   return names;
 }
 
+// The first float or double field of `message`, at any depth, whose value is
+// not finite: its path as --set spells it ("fluid.water[0].max.x") and value.
+struct NonFinite {
+  std::string field;
+  double value;
+};
+
+std::optional<NonFinite> first_non_finite(const pb::Message& message, const std::string& scope) {
+  const pb::Reflection& reflection = *message.GetReflection();
+  std::vector<const pb::FieldDescriptor*> fields;
+  reflection.ListFields(message, &fields);
+  for (const pb::FieldDescriptor* field : fields) {
+    const std::string name = (scope.empty() ? "" : scope + ".") + field->name();
+    const int count = field->is_repeated() ? reflection.FieldSize(message, field) : 1;
+    for (int k = 0; k < count; ++k) {
+      const std::string where = field->is_repeated() ? name + "[" + std::to_string(k) + "]" : name;
+      double value = 0.0;
+      switch (field->cpp_type()) {
+        case pb::FieldDescriptor::CPPTYPE_MESSAGE: {
+          const pb::Message& inner = field->is_repeated()
+                                         ? reflection.GetRepeatedMessage(message, field, k)
+                                         : reflection.GetMessage(message, field);
+          if (auto found = first_non_finite(inner, where)) return found;
+          continue;
+        }
+        case pb::FieldDescriptor::CPPTYPE_DOUBLE:
+          value = field->is_repeated() ? reflection.GetRepeatedDouble(message, field, k)
+                                       : reflection.GetDouble(message, field);
+          break;
+        case pb::FieldDescriptor::CPPTYPE_FLOAT:
+          value = field->is_repeated() ? reflection.GetRepeatedFloat(message, field, k)
+                                       : reflection.GetFloat(message, field);
+          break;
+        default:
+          continue;
+      }
+      if (!std::isfinite(value)) return NonFinite{where, value};
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 CaseFile load_case(const std::string& path, const std::vector<std::string>& overrides) {
@@ -50,6 +94,7 @@ CaseFile load_case(const std::string& path, const std::vector<std::string>& over
     throw ConfigError(errors.first_error().empty() ? path + ": not a valid case file"
                                                    : errors.first_error());
   for (const std::string& assignment : overrides) apply_override(case_file, assignment);
+  require_finite(case_file);
   return case_file;
 }
 
@@ -128,6 +173,15 @@ void apply_override(CaseFile& case_file, const std::string& assignment) {
     message = field->is_repeated() ? reflection->MutableRepeatedMessage(message, field, index)
                                    : reflection->MutableMessage(message, field);
   }
+}
+
+void require_finite(const CaseFile& case_file) {
+  // One walk over every number of the case, so that no field's own check can
+  // forget it: an infinity or NaN compares false with everything and would
+  // pass a check written as "refuse if x < 0".
+  if (const auto found = first_non_finite(case_file.config, ""))
+    throw ConfigError(case_file.path + ": " + found->field + ": must be a finite number, got " +
+                      format_number(found->value));
 }
 
 void require(bool ok, const CaseFile& case_file, const std::string& field,

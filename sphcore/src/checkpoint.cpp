@@ -15,6 +15,9 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "hdf5_in_memory.hpp"
+#include "sphcore/whole_file.hpp"
+
 namespace sph {
 
 namespace {
@@ -224,41 +227,42 @@ std::string Checkpoint::write(const std::string& out_dir, const std::string& nam
   std::size_t written = 0;
   const std::size_t arrays = whole.reals_.size() + whole.integers_.size() + whole.bytes_.size();
 
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // we report errors ourselves
-  const hid_t file = H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file < 0) throw std::runtime_error(partial + ": cannot create checkpoint file");
+  // Built in memory, written whole (hdf5_in_memory.hpp, whole_file.hpp).
+  const hid_t file = create_in_memory(path);
   auto after_each = [&] {
     if (killed && ++written == arrays / 2) {
-      H5Fflush(file, H5F_SCOPE_GLOBAL);
+      // What a process killed halfway through the write leaves: a torn .partial.
+      const std::string half = image_of(file, path);
+      std::FILE* torn = std::fopen(partial.c_str(), "wb");
+      if (torn != nullptr) {
+        std::fwrite(half.data(), 1, half.size(), torn);
+        std::fclose(torn);
+      }
       std::raise(SIGKILL);
     }
   };
+  std::string image;
   try {
     for (const auto& [key, values] : whole.reals_) {
       write_dataset(file, key, values.data(), H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, values.size(),
-                    partial);
+                    path);
       after_each();
     }
     for (const auto& [key, values] : whole.integers_) {
-      write_dataset(file, key, values.data(), H5T_STD_I64LE, H5T_NATIVE_INT64, values.size(),
-                    partial);
+      write_dataset(file, key, values.data(), H5T_STD_I64LE, H5T_NATIVE_INT64, values.size(), path);
       after_each();
     }
     for (const auto& [key, values] : whole.bytes_) {
-      write_dataset(file, key, values.data(), H5T_STD_U8LE, H5T_NATIVE_UINT8, values.size(),
-                    partial);
+      write_dataset(file, key, values.data(), H5T_STD_U8LE, H5T_NATIVE_UINT8, values.size(), path);
       after_each();
     }
+    image = image_of(file, path);
   } catch (...) {
     H5Fclose(file);
-    std::remove(partial.c_str());
     throw;
   }
-  if (H5Fclose(file) < 0) throw std::runtime_error(partial + ": cannot finish checkpoint file");
-  sync_path(partial, O_RDONLY);
-  if (std::rename(partial.c_str(), path.c_str()) != 0)
-    throw std::runtime_error(path +
-                             ": cannot rename checkpoint into place: " + std::strerror(errno));
+  H5Fclose(file);
+  write_whole_file(path, image, Sync::to_disk);
   sync_path(folder, O_RDONLY | O_DIRECTORY);
 
   // Keep the newest two complete ones; a .partial is a write that never finished.

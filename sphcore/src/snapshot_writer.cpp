@@ -3,12 +3,13 @@
 #include <hdf5.h>
 
 #include <cstdio>
-#include <fstream>
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
 
+#include "hdf5_in_memory.hpp"
 #include "sphcore/checkpoint.hpp"
+#include "sphcore/whole_file.hpp"
 
 namespace sph {
 
@@ -140,10 +141,9 @@ void write_connectivity(hid_t file, std::size_t size, const std::string& path) {
 
 void SnapshotWriter::write_file(const Snapshot& snapshot, double time,
                                 const std::string& path) const {
-  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // we report errors ourselves
-  const std::string partial = path + ".partial";
-  const hid_t file = H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
-  if (file < 0) throw std::runtime_error(partial + ": cannot create HDF5 file");
+  // Built in memory, written whole (hdf5_in_memory.hpp).
+  const hid_t file = create_in_memory(path);
+  std::string image;
   try {
     write_dataset(file, "/position", snapshot.positions(), snapshot.size(), 3, path);
     write_connectivity(file, snapshot.size(), path);
@@ -159,19 +159,18 @@ void SnapshotWriter::write_file(const Snapshot& snapshot, double time,
     H5Awrite(attribute, H5T_NATIVE_DOUBLE, &time);
     H5Aclose(attribute);
     H5Sclose(scalar);
+    image = image_of(file, path);
   } catch (...) {
     H5Fclose(file);
     throw;
   }
-  if (H5Fclose(file) < 0 || std::rename(partial.c_str(), path.c_str()) != 0)
-    throw std::runtime_error(path + ": cannot finish HDF5 file");
+  H5Fclose(file);
+  write_whole_file(path, image);
 }
 
 void SnapshotWriter::write_index() const {
-  const std::string path = out_dir_ + "/" + name_ + ".xdmf";
-  const std::string partial = path + ".partial";
+  std::ostringstream out;
   {
-    std::ofstream out(partial);
     out.precision(12);
     out << "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\">\n <Domain>\n"
         << "  <Grid Name=\"" << name_
@@ -204,10 +203,9 @@ void SnapshotWriter::write_index() const {
       out << "   </Grid>\n";
     }
     out << "  </Grid>\n </Domain>\n</Xdmf>\n";
-    if (!out) throw std::runtime_error(partial + ": cannot write XDMF index");
   }
-  if (std::rename(partial.c_str(), path.c_str()) != 0)
-    throw std::runtime_error(path + ": cannot write XDMF index");
+  // Whole or not at all: a full disk must not replace the good index with a torn one.
+  write_whole_file(out_dir_ + "/" + name_ + ".xdmf", out.str());
 }
 
 }  // namespace sph

@@ -1,22 +1,16 @@
 #include "sphcore/timeseries_writer.hpp"
 
+#include <cerrno>
 #include <cstdio>
+#include <filesystem>
 #include <sstream>
 #include <stdexcept>
+#include <system_error>
 
 #include "sphcore/case_file.hpp"
+#include "sphcore/whole_file.hpp"
 
 namespace sph {
-
-TimeSeriesWriter::TimeSeriesWriter(const std::string& path, std::vector<Column> columns)
-    : path_(path), columns_(std::move(columns)), out_(path) {
-  if (!out_) throw std::runtime_error(path + ": cannot create time-series file");
-  for (std::size_t c = 0; c < columns_.size(); ++c)
-    out_ << (c ? "," : "") << columns_[c].name << " [" << columns_[c].unit << "]";
-  out_ << '\n';
-  out_.precision(9);
-  out_.flush();
-}
 
 namespace {
 
@@ -28,6 +22,19 @@ std::string header_of(const std::vector<Column>& columns) {
 }
 
 }  // namespace
+
+TimeSeriesWriter::TimeSeriesWriter(const std::string& path, std::vector<Column> columns)
+    : path_(path), columns_(std::move(columns)) {
+  start_with(header_of(columns_) + "\n");
+}
+
+void TimeSeriesWriter::start_with(const std::string& text) {
+  write_whole_file(path_, text);
+  whole_size_ = text.size();
+  out_.open(path_, std::ios::app);
+  if (!out_) throw std::runtime_error(path_ + ": cannot append to it: " + system_reason(errno));
+  out_.precision(9);
+}
 
 TimeSeriesWriter::TimeSeriesWriter(const std::string& path, std::vector<Column> columns,
                                    ContinueAfter kept)
@@ -47,28 +54,32 @@ TimeSeriesWriter::TimeSeriesWriter(const std::string& path, std::vector<Column> 
   }
   in.close();
   // The rows after the checkpoint are written again by the resumed run.
-  const std::string partial = path + ".partial";
-  {
-    std::ofstream whole(partial, std::ios::trunc);
-    whole << text;
-    whole.flush();
-    if (!whole) throw std::runtime_error(partial + ": write failed (disk full?)");
-  }
-  if (std::rename(partial.c_str(), path.c_str()) != 0)
-    throw std::runtime_error(path + ": cannot replace the time series");
-  out_.open(path, std::ios::app);
-  if (!out_) throw std::runtime_error(path + ": cannot append to time-series file");
-  out_.precision(9);
+  start_with(text);
 }
 
 void TimeSeriesWriter::write_row(std::span<const double> values) {
   if (values.size() != columns_.size())
     throw std::logic_error(path_ + ": row has " + std::to_string(values.size()) + " values for " +
                            std::to_string(columns_.size()) + " columns");
-  for (std::size_t c = 0; c < values.size(); ++c) out_ << (c ? "," : "") << values[c];
-  out_ << '\n';
+  std::ostringstream row;
+  row.precision(9);
+  for (std::size_t c = 0; c < values.size(); ++c) row << (c ? "," : "") << values[c];
+  row << '\n';
+  const std::string text = row.str();
+  errno = 0;
+  out_ << text;
   out_.flush();
-  if (!out_) throw std::runtime_error(path_ + ": write failed (disk full?)");
+  if (!out_) {
+    // Part of the row may have reached the file: cut it off, so that the
+    // file holds whole rows only.
+    const int error = errno;
+    out_.close();
+    std::error_code ignored;
+    std::filesystem::resize_file(path_, whole_size_, ignored);
+    throw std::runtime_error(path_ + ": cannot add a row (" + system_reason(error) +
+                             "); it keeps its " + std::to_string(rows_) + " whole rows");
+  }
+  whole_size_ += text.size();
   ++rows_;
 }
 

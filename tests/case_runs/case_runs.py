@@ -16,6 +16,7 @@ def run_case(case, out, settings):
     """Runs cases/CASE.pbtxt into OUT with each FIELD=VALUE of SETTINGS;
     returns the finished process, its output and errors together in stdout."""
     command = [os.path.join(REPO, "coupler", "cosph"), "run", case, "--out", out, "--quiet",
+               "--overwrite",
                # ctest runs other process-heavy tests beside these: a peer
                # starved of the cores for 10 s is not what they are about.
                "--set", "coupling.timeout=60"]

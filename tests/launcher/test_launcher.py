@@ -200,14 +200,16 @@ class LauncherTest(unittest.TestCase):
 
     def test_spinning_openmp_threads_are_warned_of_when_processes_share_cores(self):
         warning = "cosph: warning: OMP_WAIT_POLICY=active: 3 processes share"
-        rc, _, err = self.run_case(FAKE_PLAN=THREE, FAKE_STEPS="2", OMP_WAIT_POLICY="active")
+        rc, _, err = self.run_case("--overwrite", FAKE_PLAN=THREE, FAKE_STEPS="2",
+                                   OMP_WAIT_POLICY="active")
         self.assertEqual(rc, 0, err)
         self.assertIn(warning, err)
-        rc, _, err = self.run_case(FAKE_PLAN=THREE, FAKE_STEPS="2", OMP_WAIT_POLICY="passive")
+        rc, _, err = self.run_case("--overwrite", FAKE_PLAN=THREE, FAKE_STEPS="2",
+                                   OMP_WAIT_POLICY="passive")
         self.assertEqual(rc, 0, err)
         self.assertNotIn("OMP_WAIT_POLICY", err)
         # One process has the cores to itself: spinning is its own business.
-        rc, _, err = self.run_case(OMP_WAIT_POLICY="active")
+        rc, _, err = self.run_case("--overwrite", OMP_WAIT_POLICY="active")
         self.assertEqual(rc, 0, err)
         self.assertNotIn("OMP_WAIT_POLICY", err)
 
@@ -218,7 +220,8 @@ class LauncherTest(unittest.TestCase):
     def test_multi_rate_run_gives_each_solver_cores_of_its_own(self):
         allowed = sorted(os.sched_getaffinity(0))
         # --pin: whether the cores are free (the default's condition) is tested below.
-        rc, _, err = self.run_case("--pin", FAKE_PLAN=THREE + " separate-cores", FAKE_STEPS="2")
+        rc, _, err = self.run_case("--overwrite", "--pin", FAKE_PLAN=THREE + " separate-cores",
+                                   FAKE_STEPS="2")
         self.assertEqual(rc, 0, err)
         fluid, solid = self.fake_cores("cosph-fluid"), self.fake_cores("cosph-solid-jaumann")
         self.assertEqual(sorted(fluid + solid), allowed)   # disjoint, and all of them
@@ -229,7 +232,7 @@ class LauncherTest(unittest.TestCase):
         self.assertIn(f"taskset -c {','.join(map(str, solid))} ", command)
         # Asked not to, or synchronised: every process may run anywhere.
         for extra, plan in (("--no-pin", THREE + " separate-cores"), (None, THREE)):
-            rc, _, err = self.run_case(*([extra] if extra else []), FAKE_PLAN=plan,
+            rc, _, err = self.run_case("--overwrite", *([extra] if extra else []), FAKE_PLAN=plan,
                                        FAKE_STEPS="2")
             self.assertEqual(rc, 0, err)
             for name in THREE.split():
@@ -238,7 +241,7 @@ class LauncherTest(unittest.TestCase):
             self.assertNotIn("taskset", (self.out / "command.txt").read_text())
 
     def test_endpoint_option(self):
-        rc, _, err = self.run_case("--endpoint", "tcp://127.0.0.1:5555",
+        rc, _, err = self.run_case("--overwrite", "--endpoint", "tcp://127.0.0.1:5555",
                                    FAKE_PLAN="cosph-fluid cosph-solid-jaumann", FAKE_STEPS="2")
         self.assertEqual(rc, 0, err)
         self.assertEqual(self.fake_args("cosph-solid-jaumann")[-2:],
@@ -248,7 +251,7 @@ class LauncherTest(unittest.TestCase):
         keys = self.out / "private"
         seen = set()
         for _ in range(2):
-            rc, _, err = self.run_case("--endpoint", "tcp://127.0.0.1:5555",
+            rc, _, err = self.run_case("--endpoint", "tcp://127.0.0.1:5555", "--overwrite",
                                        FAKE_PLAN=THREE, FAKE_STEPS="2",
                                        COSPH_BIN=self.bin_with_real_keys())
             self.assertEqual(rc, 0, err)
@@ -314,7 +317,7 @@ class LauncherTest(unittest.TestCase):
         self.assertEqual((self.out / "case.pbtxt").read_text(), "name: 'sloshing'\n")
         elsewhere = self.tmp / "my_case.pbtxt"
         elsewhere.write_text("name: 'mine'\n")
-        rc, _, err = self.cosph("run", str(elsewhere), "--out", str(self.out))
+        rc, _, err = self.cosph("run", str(elsewhere), "--out", str(self.out), "--overwrite")
         self.assertEqual(rc, 0, err)
         self.assertEqual((self.out / "case.pbtxt").read_text(), "name: 'mine'\n")
 
@@ -361,6 +364,66 @@ class LauncherTest(unittest.TestCase):
         self.assertEqual(out, "")
         self.assertTrue((self.state / "plan.args").exists())
         self.assertEqual(self.recorded_pids(), {})   # nothing started
+
+    # -- the output folder: locked while a run writes, an earlier run's not mixed in
+
+    def test_a_second_run_into_a_running_folder_is_refused_naming_the_first(self):
+        first = self.launch("run", "dam_break", "--out", str(self.out), FAKE_HANG="cosph-fluid")
+        self.wait_for_pids(["cosph-fluid"])
+        rc, _, err = self.run_case("--overwrite")
+        os.killpg(first.pid, signal.SIGINT)
+        first.communicate(timeout=15)
+        self.assertEqual(rc, 2, err)
+        self.assertIn(f"{self.out} is in use by another run (pid {first.pid}, started ", err)
+        self.assertIn(f"run dam_break --out {self.out})", err)
+        # Nothing of the first run was touched, and nothing of the second started.
+        self.assertEqual(sorted(self.recorded_pids()), ["cosph-fluid"])
+        self.assertTrue((self.out / "case.pbtxt").is_file())
+        # The lock goes with the run: now the folder may be reused.
+        rc, _, err = self.run_case("--overwrite", FAKE_STEPS="2")
+        self.assertEqual(rc, 0, err)
+
+    def test_a_resume_into_a_running_folder_is_refused(self):
+        first = self.launch("run", "dam_break", "--out", str(self.out), FAKE_HANG="cosph-fluid")
+        self.wait_for_pids(["cosph-fluid"])
+        rc, _, err = self.cosph("resume", str(self.out))
+        os.killpg(first.pid, signal.SIGINT)
+        first.communicate(timeout=15)
+        self.assertEqual(rc, 2, err)
+        self.assertIn(f"{self.out} is in use by another run (pid {first.pid}, started ", err)
+
+    def test_a_folder_with_an_earlier_run_is_refused_without_overwrite(self):
+        rc, _, err = self.run_case(FAKE_STEPS="2")
+        self.assertEqual(rc, 0, err)
+        # A longer earlier run's later snapshot, checkpoint and plot, and a file of the user's.
+        for name in ("fluid_000041.h5", "fluid.xdmf", "timeseries.csv.partial",
+                     "checkpoints/fluid_000000100.h5", "plots/front.png", "notes.txt"):
+            (self.out / name).parent.mkdir(exist_ok=True)
+            (self.out / name).write_text("earlier\n")
+        (self.state / "cosph-fluid.pid").unlink()
+        rc, _, err = self.run_case(FAKE_STEPS="2")
+        self.assertEqual(rc, 2, err)
+        self.assertIn(f"{self.out} holds the output of an earlier run (", err)
+        self.assertIn("give --overwrite to replace it", err)
+        self.assertEqual(self.recorded_pids(), {}, "a process started in a refused folder")
+        self.assertTrue((self.out / "fluid_000041.h5").exists(), "refused, yet removed")
+
+        rc, _, err = self.run_case("--overwrite", FAKE_STEPS="2")
+        self.assertEqual(rc, 0, err)
+        # The earlier run's files are gone, the user's stays, and this run wrote its own.
+        left = sorted(str(p.relative_to(self.out)) for p in self.out.rglob("*") if p.is_file())
+        self.assertEqual(left, [".cosph.lock", "case.pbtxt", "command.txt", "fluid.xdmf",
+                                "notes.txt", "timeseries.csv"])
+        self.assertNotEqual((self.out / "fluid.xdmf").read_text(), "earlier\n")
+
+    def test_rerunning_a_folders_own_case_keeps_it(self):
+        rc, _, err = self.run_case(FAKE_STEPS="2")
+        self.assertEqual(rc, 0, err)
+        own = self.out / "case.pbtxt"
+        rc, _, err = self.cosph("run", str(own), "--out", str(self.out), "--overwrite",
+                                FAKE_STEPS="2")
+        self.assertEqual(rc, 0, err)
+        self.assertEqual(own.read_text(), "name: 'dam_break'\n")
 
     # -- failures
 

@@ -55,7 +55,7 @@ class ThirdPartySolid(FakeProgramsWithRealCase, unittest.TestCase):
         case = self.cases / "plate.pbtxt"
         case.write_text(case_text)
         proc = subprocess.run([str(REPO / "coupler" / "cosph"), "run", str(case),
-                               "--out", str(self.out), "--quiet", *extra],
+                               "--out", str(self.out), "--quiet", "--overwrite", *extra],
                               env={**self.env, **env}, stdin=subprocess.DEVNULL,
                               capture_output=True, text=True, timeout=60)
         return case, proc

@@ -34,7 +34,7 @@ def launcher(*args, env=None):
 def run_case(case, out, *settings):
     # coupling.timeout: ctest runs other process-heavy tests beside this one.
     sets = [arg for s in ("coupling.timeout=60",) + settings for arg in ("--set", s)]
-    return launcher("run", case, "--out", out, "--quiet", *sets)
+    return launcher("run", case, "--out", out, "--quiet", "--overwrite", *sets)
 
 
 def png_size(path):

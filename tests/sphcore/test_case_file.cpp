@@ -140,6 +140,19 @@ TEST(CaseFileOverride, MalformedAssignmentsAreRefused) {
   }
 }
 
+TEST(CaseFile, NonFiniteNumbersAnywhereAreRefusedNamingTheField) {
+  ScratchDir dir("case_file");
+  const std::string path = dir.file("level.pbtxt");
+  // In a list of numbers, written in the file, not set on the command line.
+  cosph::testing::write_text(path,
+                             "run { end_time: 1 }\n"
+                             "fluid { gauges { level_probes: 0.1 level_probes: inf } }\n");
+  EXPECT_EQ(config_error([&] { sph::load_case(path); }),
+            path + ": fluid.gauges.level_probes[1]: must be a finite number, got inf");
+  EXPECT_EQ(config_error([&] { sph::load_case(kDamBreak, {"fluid.walls[2].max.y=nan"}); }),
+            kDamBreak + ": fluid.walls[2].max.y: must be a finite number, got nan");
+}
+
 TEST(CaseFile, RequireNamesFileFieldAndReason) {
   const sph::CaseFile c = sph::load_case(kDamBreak);
   EXPECT_NO_THROW(sph::require(true, c, "fluid.spacing", "unused"));

@@ -32,6 +32,7 @@
 #include <vector>
 
 #include "participant/coupled_solver.hpp"
+#include "participant/coupling_error.hpp"
 #include "participant/participant.hpp"
 #include "sphcore/checkpoint.hpp"
 #include "sphcore/gauge.hpp"
@@ -81,6 +82,19 @@ class CoupledRun {
   int run() {
     try {
       return loop();
+    } catch (const CouplingError& error) {
+      // The coupler or the other solver stopped first (Ctrl-C or SIGTERM
+      // reached it before this process, or it failed) while this solver
+      // waited for it: the state in hand is still written. Not before the
+      // coupler welcomed it: a solver it refused is not part of the run, and
+      // must not add to the indexes of the folder it may share with one.
+      const std::string kept = connected_ ? final_snapshot() : "";
+      if (sph::stop_requested()) {
+        std::cerr << settings_.name << ": interrupted (Ctrl-C or SIGTERM)" << kept << std::endl;
+        return 130;
+      }
+      participant_.report_error(settings_.name + ": " + error.what());
+      throw CouplingError(error.what() + kept);
     } catch (const sph::RunawayError& error) {
       const std::string message = std::string(error.what()) + overstep_note() +
                                   ". Last good snapshot: " + last_snapshot_ +
@@ -101,6 +115,7 @@ class CoupledRun {
     sph::Region region = participant_.connect(
         settings_.phase, settings_.solver_description, solver_.particles().size(),
         solver_.max_smoothing_length(), solver_.interaction_bounds(), resuming ? windows_ : -1);
+    connected_ = true;
     sph::ProgressReporter progress(run_.end_time);
     if (!resuming) reply = exchange(region, solver_.time(), windows_);
     // A resumed run's first state is its checkpoint's, whose snapshot and
@@ -258,6 +273,18 @@ class CoupledRun {
     last_time_ = solver_.time();
   }
 
+  // After a coupling failure: the state as the failure found it, perhaps in
+  // the middle of a step (its positions then up to one step ahead of the time
+  // it is labelled with). Returns what to add to the message.
+  std::string final_snapshot() noexcept {
+    try {
+      write_snapshot();
+      return "; final snapshot " + last_snapshot_ + " (t = " + std::to_string(last_time_) + " s)";
+    } catch (const std::exception& error) {
+      return std::string("; no final snapshot: ") + error.what();
+    }
+  }
+
   Solver& solver_;
   sph::RunThreads* threads_ = nullptr;
   sph::RunParameters run_;
@@ -271,6 +298,7 @@ class CoupledRun {
   double largest_overstep_ = 0.0;  // largest step taken whole over the proposed one
   double next_snapshot_ = 0.0;
   sph::CheckpointSettings checkpoints_;
+  bool connected_ = false;  // the coupler welcomed this solver
   std::string last_snapshot_ = "(none yet)";
   double last_time_ = 0.0;
 };

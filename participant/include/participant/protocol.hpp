@@ -12,6 +12,7 @@
 #include <zmq.hpp>
 
 #include "coupling.pb.h"
+#include "participant/coupling_error.hpp"
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/region.hpp"
 
@@ -21,12 +22,6 @@ inline constexpr unsigned kProtocolVersion = 3;
 // Version 3 added InterfaceState.acceleration, which a version-2 peer leaves
 // empty: the coupler still takes it, and leaves that term out.
 inline constexpr unsigned kOldestProtocolVersion = 2;
-
-// A peer misbehaved, vanished or refused us: the message is ready for a user.
-class CouplingError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 const char* phase_name(Phase phase);
 

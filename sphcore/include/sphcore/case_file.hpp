@@ -23,10 +23,16 @@ struct CaseFile {
 };
 
 // Parses the file, then applies each "field.path=value" override in turn
-// (repeated fields by index: "fluid.water[0].max.x=0.2").
+// (repeated fields by index: "fluid.water[0].max.x=0.2"), then refuses any
+// number that is not finite (require_finite).
 CaseFile load_case(const std::string& path, const std::vector<std::string>& overrides = {});
 
 void apply_override(CaseFile& case_file, const std::string& assignment);
+
+// Throws ConfigError "FILE: FIELD: must be a finite number, got inf" for the
+// first float or double field, at any depth, that is an infinity or NaN
+// (load_case calls it after the overrides).
+void require_finite(const CaseFile& case_file);
 
 // Throws ConfigError "FILE: FIELD: REASON" unless ok: the one way a solver
 // refuses a case.

@@ -1,8 +1,11 @@
-// DIR/timeseries.csv: one row per output interval, a header naming every
-// column with its unit ("t [s]"), flushed row by row so that a run that stops
-// early keeps everything it measured.
+// DIR/timeseries.csv (and the coupler's coupling.csv): one row per output
+// interval, a header naming every column with its unit ("t [s]"), flushed row
+// by row so that a run that stops early keeps everything it measured. The
+// file holds whole rows only: it starts whole or not at all (sph::
+// write_whole_file), and a row that cannot be written whole is cut off again.
 #pragma once
 
+#include <cstdint>
 #include <fstream>
 #include <span>
 #include <string>
@@ -33,8 +36,12 @@ class TimeSeriesWriter {
  private:
   std::string path_;
   std::vector<Column> columns_;
+  // Writes `text` (the header and any kept rows) whole, then opens it to append.
+  void start_with(const std::string& text);
+
   std::ofstream out_;
   std::size_t rows_ = 0;
+  std::uintmax_t whole_size_ = 0;  // bytes of the file up to its last whole row
 };
 
 }  // namespace sph
