@@ -76,6 +76,15 @@ SubstepChoice read_substep_choice(const sph::CaseFile& case_file) {
   try {
     const auto fluid = cosph::fluid::read_fluid_parameters(case_file);
     const auto solid = cosph::solid::read_solid_parameters(case_file);
+    // The added-mass bound assumes the solid damps what a held force excites
+    // between windows (both continuum solids carry artificial viscosity). The
+    // shell has no dissipation of its own: held forces pump its
+    // shear-rotation modes (docs/shell.md, "Coupled"), so it steps with the
+    // water.
+    if (solid.model == cosph::solid::SolidModel::shell)
+      return {1, -1.0,
+              "synchronised (automatic: the shell solid has no dissipation of its own, and "
+              "multi-rate windows pump its shear-rotation modes; docs/shell.md)"};
     return choose_substeps(
         {fluid.run.cfl, fluid.rho0, fluid.c0, fluid.h, solid.rho0, solid.c0, solid.h, thickness});
   } catch (const sph::ConfigError& error) {

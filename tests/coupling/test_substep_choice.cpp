@@ -86,6 +86,17 @@ TEST(SubstepChoice, TheCaseIsAutomaticByDefault) {
   EXPECT_EQ(read_substep_choice(elastic_plate_case({"solid.density=50"})).max_substeps, 1);
 }
 
+TEST(SubstepChoice, TheShellStepsWithTheWater) {
+  const auto choice = read_substep_choice(elastic_plate_case({"solid.model=shell"}));
+  EXPECT_EQ(choice.max_substeps, 1);
+  EXPECT_NE(choice.reason.find("shell"), std::string::npos) << choice.reason;
+  // Asked for, multi-rate still means what it says.
+  EXPECT_EQ(
+      read_substep_choice(elastic_plate_case({"solid.model=shell", "coupling.max_substeps=4"}))
+          .max_substeps,
+      4);
+}
+
 TEST(SubstepChoice, AnExplicitValueMeansWhatItSays) {
   for (int set : {1, 5, 64}) {
     const auto choice =
