@@ -10,8 +10,8 @@ import unittest
 from fake_programs import REPO, FakeProgramsWithRealCase
 
 
-class BadCouplingFields(FakeProgramsWithRealCase, unittest.TestCase):
-    tmp_prefix = "cosph-plan-"
+class LaunchesElasticPlate(FakeProgramsWithRealCase):
+    """`cosph run elastic_plate` with the given --set values, into a fresh folder."""
 
     def launch(self, *settings):
         command = [str(REPO / "coupler" / "cosph"), "run", "elastic_plate",
@@ -20,6 +20,10 @@ class BadCouplingFields(FakeProgramsWithRealCase, unittest.TestCase):
             command += ["--set", setting]
         return subprocess.run(command, env=self.env, stdin=subprocess.DEVNULL,
                               capture_output=True, text=True, timeout=60)
+
+
+class BadCouplingFields(LaunchesElasticPlate, unittest.TestCase):
+    tmp_prefix = "cosph-plan-"
 
     def test_each_bad_value_is_refused_before_anything_starts(self):
         refusals = {
@@ -51,20 +55,12 @@ class BadCouplingFields(FakeProgramsWithRealCase, unittest.TestCase):
         self.assertEqual(started, ["cosph-coupler", "cosph-fluid", "cosph-solid-jaumann"])
 
 
-class BadNumbersAnywhere(FakeProgramsWithRealCase, unittest.TestCase):
+class BadNumbersAnywhere(LaunchesElasticPlate, unittest.TestCase):
     """Every number of a case is checked for infinities and NaN by one walk
     over the parsed case (sph::require_finite), so that no field's own check
     can miss one; and a scene too large for the particle limit is refused
     with its estimate before anything is allocated."""
     tmp_prefix = "cosph-numbers-"
-
-    def launch(self, *settings):
-        command = [str(REPO / "coupler" / "cosph"), "run", "elastic_plate",
-                   "--out", str(self.tmp / "out"), "--quiet"]
-        for setting in settings:
-            command += ["--set", setting]
-        return subprocess.run(command, env=self.env, stdin=subprocess.DEVNULL,
-                              capture_output=True, text=True, timeout=60)
 
     def test_non_finite_values_are_refused_naming_the_field(self):
         for setting in ("run.end_time=inf", "fluid.density=inf", "solid.youngs_modulus=nan",
