@@ -55,10 +55,17 @@ class HandStartedProcessesTakeTheFolderLock(unittest.TestCase):
         self.processes = []
 
     def tearDown(self):
+        # Ctrl-C first: a launcher killed outright leaves its children to
+        # write their final snapshots into the folder after it is removed.
         for process in self.processes:
             if process.poll() is None:
+                process.send_signal(signal.SIGINT)
+        for process in self.processes:
+            try:
+                process.communicate(timeout=30)
+            except subprocess.TimeoutExpired:
                 process.kill()
-            process.communicate()
+                process.communicate()
         shutil.rmtree(self.root, ignore_errors=True)
 
     def start(self, program, endpoint):
