@@ -13,7 +13,8 @@ from .locate import (BUILD_HINT, available_cases, bin_dir, check_sets, find_exe,
                      resolve_case)
 from .output_dir import clear_earlier_output, lock_out_dir, prepare_out_dir
 from .plan import check_endpoint, child_commands, core_placement, pinning_pays, run_plan
-from .resume import check_resume_sets, last_complete_checkpoint, recorded_run
+from .resume import (check_resume_sets, discard_later_checkpoints, last_complete_checkpoint,
+                     recorded_run)
 from .security import check_bind, default_endpoint, make_private_dir, with_key_args
 from .supervise import Child, Run, SignalState
 
@@ -147,7 +148,7 @@ def cmd_resume(args, repo, signals, run_parser):
     check_resume_sets(args.set)
     out = Path(os.path.abspath(os.path.expanduser(args.dir)))
     recorded = recorded_run(out, run_parser)
-    lock = lock_out_dir(out, shlex.join(sys.argv))  # noqa: F841 (held until the run ends)
+    lock = lock_out_dir(out, shlex.join(sys.argv))  # held until the run ends
     case = out / "case.pbtxt"
     if not case.is_file():
         raise UsageError(f"{case}: missing: is {out} the output folder of a cosph run?")
@@ -157,11 +158,13 @@ def cmd_resume(args, repo, signals, run_parser):
     for name in names:
         find_exe(folder, name)
     checkpoints = last_complete_checkpoint(out, names)
+    sequence = int(checkpoints[names[0]].stem.split("_")[-1])
+    discard_later_checkpoints(out, sequence)
     endpoint = recorded.endpoint or default_endpoint(out)
     commands = [cmd + ["--resume", str(checkpoints[name])] for name, cmd in
                 zip(names, with_key_args(child_commands(names, folder, case, out, sets, endpoint),
                                          names, out, endpoint, recorded.bind_any))]
-    emit(sys.stderr, f"cosph: resuming {out} from {checkpoints[names[0]].name.split('_')[-1][:-3]}"
+    emit(sys.stderr, f"cosph: resuming {out} from {sequence:09d}"
                      f" ({', '.join(str(p.name) for p in checkpoints.values())})\n")
     try:
         with open(out / "command.txt", "a") as record:
@@ -170,7 +173,7 @@ def cmd_resume(args, repo, signals, run_parser):
         raise UsageError(f"cannot record the resume in {out / 'command.txt'}: {err}") from err
     args.no_pin = args.pin = False
     return start_and_supervise(
-        args, out, names, commands, separate_cores, signals,
+        args, out, names, commands, separate_cores, signals, lock,
         on_cores=lambda placement: len(names) > 1 and make_private_dir(out, folder, endpoint,
                                                                        names))
 
@@ -190,7 +193,7 @@ def cmd_run(args, repo, signals):
         check_bind(endpoint, args.bind_any)
     elif args.endpoint:
         emit(sys.stderr, f"cosph: note: --endpoint is not used, {names[0]} runs alone\n")
-    lock = lock_out_dir(out, shlex.join(sys.argv))  # noqa: F841 (held until the run ends)
+    lock = lock_out_dir(out, shlex.join(sys.argv))  # held until the run ends
     clear_earlier_output(out, case, args.overwrite)
     commands = with_key_args(child_commands(names, folder, case, out, args.set, endpoint),
                              names, out, endpoint, args.bind_any)
@@ -199,13 +202,14 @@ def cmd_run(args, repo, signals):
         prepare_out_dir(out, case, plan_cmd, commands, [placement.get(n) for n in names])
         if len(names) > 1:
             make_private_dir(out, folder, endpoint, names)
-    return start_and_supervise(args, out, names, commands, separate_cores, signals,
+    return start_and_supervise(args, out, names, commands, separate_cores, signals, lock,
                                on_cores=prepare)
 
 
-def start_and_supervise(args, out, names, commands, separate_cores, signals, on_cores):
+def start_and_supervise(args, out, names, commands, separate_cores, signals, lock, on_cores):
     """Starts the processes, the solvers of a multi-rate run on cores of their
-    own where that pays, and supervises them; on_cores(placement) runs first."""
+    own where that pays, and supervises them; on_cores(placement) runs first.
+    Each child is handed `lock`, the output folder's."""
     allowed = os.sched_getaffinity(0)
     placement = {} if args.no_pin else core_placement(names, separate_cores, allowed)
     if placement and not args.pin and not pinning_pays(allowed):
@@ -219,6 +223,7 @@ def start_and_supervise(args, out, names, commands, separate_cores, signals, on_
     children = [Child(n, c) for n, c in zip(names, commands)]
     for child, name in zip(children, names):
         child.cores = placement.get(name)
+        child.lock_fd = lock.fileno()
     if placement:
         console.line(sys.stderr, "cosph: multi-rate run: " + ", ".join(
             f"{child.name} on core{'s' if len(child.cores) > 1 else ''} "

@@ -14,6 +14,11 @@ import time
 from .errors import UsageError
 
 LOCK_NAME = ".cosph.lock"
+# The launcher's children are handed its open lock under this variable (the
+# descriptor's number; sphcore/output_lock.hpp): the folder is their run's.
+# A process started by hand takes the lock itself, and is refused if another
+# run holds it.
+LOCK_FD_VARIABLE = "COSPH_OUT_LOCK_FD"
 
 # The files a cosph run writes into its output folder (solvers, coupler,
 # launcher, `cosph plot` into plots/), and nothing else: --overwrite removes
@@ -38,7 +43,8 @@ def lock_out_dir(out, what):
         fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
     except BlockingIOError:
         lock.seek(0)
-        holder = lock.read().strip() or "a run that has not said which"
+        # The first line names the holder; a run started by hand adds its endpoint.
+        holder = (lock.read().strip().splitlines() or [""])[0] or "a run that has not said which"
         lock.close()
         raise UsageError(f"{out} is in use by another run ({holder}); wait for it to "
                          f"finish or choose another --out") from None

@@ -68,3 +68,19 @@ def last_complete_checkpoint(out, names):
                          f"(run.checkpoint_interval)")
     sequence = max(common)
     return {name: folder / f"{part}_{sequence:09d}.h5" for name, part in zip(names, parts)}
+
+
+def discard_later_checkpoints(out, sequence):
+    """Removes the checkpoints taken after `sequence`: parts of a set that
+    some process never finished (one stopped before the others wrote theirs,
+    a Ctrl-C whose checkpoint the coupler could not complete). The resumed run
+    takes those steps again; left, they would count as the newest two when
+    its own checkpoints are pruned (sphcore/src/checkpoint.cpp)."""
+    folder = out / "checkpoints"
+    try:
+        for path in folder.iterdir():
+            match = CHECKPOINT_RE.match(path.name)
+            if match and int(match["sequence"]) > sequence:
+                path.unlink()
+    except OSError as err:
+        raise UsageError(f"cannot remove the unfinished checkpoints from {folder}: {err}") from err

@@ -12,6 +12,7 @@ import time
 
 from .console import Progress, parse_progress, status_text
 from .errors import EXIT_FAILURE, EXIT_INTERRUPTED, EXIT_OK, Exit, Interrupted
+from .output_dir import LOCK_FD_VARIABLE
 from .timing import INT_GRACE_S, READER_JOIN_S, STRAGGLER_S, TERM_GRACE_S
 
 def _load_prctl():
@@ -44,6 +45,7 @@ class Child:
         self.proc = None
         self.shares_cores = False  # set when the run has more than one process
         self.cores = None          # the cores it may run on, if the launcher chose them
+        self.lock_fd = None        # the output folder's lock, handed to the child
         self.readers = []
         self.done = False          # exited, reaped and its output taken in
         self.cpu_s = None          # CPU time (user + system) of all its threads, once reaped
@@ -61,6 +63,12 @@ class Child:
         env = dict(os.environ)
         if self.shares_cores:
             env.setdefault("OMP_WAIT_POLICY", "passive")
+        # The folder's lock, held open in the child too: it is its run's, and
+        # stays locked while any process of the run lives (output_dir.py).
+        passed = ()
+        if self.lock_fd is not None:
+            env[LOCK_FD_VARIABLE] = str(self.lock_fd)
+            passed = (self.lock_fd,)
         cores = self.cores
 
         def before_exec():
@@ -77,7 +85,7 @@ class Child:
         self.proc = subprocess.Popen(
             self.cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
             stderr=subprocess.PIPE, start_new_session=True, env=env,
-            preexec_fn=before_exec)
+            pass_fds=passed, preexec_fn=before_exec)
 
     def reap(self, block=False):
         """Whether the child has exited. Reaps it with wait4 rather than
@@ -271,9 +279,16 @@ class Run:
             failed = [c for c in exited if c.proc.returncode != 0]
             if failed:
                 for child in failed:
-                    self.console.error(f"{child.name} failed ({child.describe_exit()}): "
+                    what = ("was interrupted" if child.proc.returncode == EXIT_INTERRUPTED
+                            else f"failed ({child.describe_exit()})")
+                    self.console.error(f"{child.name} {what}: "
                                        f"{child.last_stderr or '(no error output)'}")
-                self.stop_all(signal.SIGTERM, TERM_GRACE_S)
+                # SIGINT or SIGTERM that reached a solver alone (a batch
+                # system's) stops a coupled run at the coupler's next step, every
+                # process writing its checkpoint: the others get as long for
+                # that as on a Ctrl-C to the launcher.
+                interrupted = all(c.proc.returncode == EXIT_INTERRUPTED for c in failed)
+                self.stop_all(signal.SIGTERM, INT_GRACE_S if interrupted else TERM_GRACE_S)
                 return failed[0].exit_code()
             if exited and first_done is None:
                 first_done = (exited[0], time.monotonic())

@@ -9,6 +9,7 @@
 #include "endpoint_safety.hpp"
 #include "participant/protocol.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/output_lock.hpp"
 #include "sphcore/run_control.hpp"
 #include "sphcore/solver_cli.hpp"
 #include "substep_choice.hpp"
@@ -31,6 +32,7 @@ int run(int argc, char** argv) {
   settings.checkpoints = {sph::run_identity(case_file), args.resume_from};
   std::cout << "cosph-coupler: sub-stepping: " << settings.stepping_reason << std::endl;
   sph::make_output_dir(args.out_dir);
+  sph::lock_output_dir(args.out_dir, args.endpoint, sph::command_line(argc, argv));
   sph::install_stop_handlers();
   return cosph::coupler::run_coupler(settings);
 }

@@ -84,9 +84,17 @@ class Session {
     for (long step = resuming ? checkpoint_step_ + 1 : 0;; ++step) {
       const int last_in = receive_states(step);
       count_pace_setter_wait(last_in);
-      const bool stop = answer(step, last_in);
-      if (stop) return 0;
-      if (sph::stop_requested()) fail("the coupler was interrupted (Ctrl-C or SIGTERM)");
+      switch (answer(step, last_in)) {
+        case Next::step:
+          break;
+        case Next::end:
+          return 0;
+        case Next::interrupted:
+          std::cerr << "cosph-coupler: interrupted (Ctrl-C or SIGTERM): stopped the run at "
+                    << "coupling step " << step << " (t = " << peers_[kFluid].state.time()
+                    << " s), every process with its checkpoint of it" << std::endl;
+          return 130;
+      }
     }
   }
 
@@ -347,8 +355,12 @@ class Session {
     pace_setter_waited_before_ = peers_[last_in].state.waiting();
   }
 
-  // Returns whether the run is over.
-  bool answer(long step, int last_in) {
+  enum class Next { step, end, interrupted };
+
+  // Returns what comes after this answer. Ctrl-C or SIGTERM, to the coupler
+  // or to a solver (its state says so), stops the run at this step: the
+  // answer asks every process for its checkpoint of it, then to stop.
+  Next answer(long step, int last_in) {
     const auto pair_start = Clock::now();
     const CrossPhaseForces forces = compute_cross_phase_forces(
         peers_[kFluid].particles, peers_[kSolid].particles, settings_.cross_phase);
@@ -367,7 +379,11 @@ class Session {
     record(step, t, dt, forces, stop);
     // Asked for ahead: the solvers then pay for gauges on these states only.
     row_due_ = !stop && (t + dt >= next_output_ || t + dt >= end - 1e-9 * end);
-    const bool checkpoint = !stop && t >= next_checkpoint_;
+    const bool interrupted =
+        !stop && (sph::stop_requested() || peers_[kFluid].state.stop_requested() ||
+                  peers_[kSolid].state.stop_requested());
+    const bool due = !stop && t >= next_checkpoint_;
+    const bool checkpoint = due || interrupted;
 
     const auto send_start = Clock::now();
     // The solver whose state came last sets the pace; the other has been
@@ -382,6 +398,7 @@ class Session {
       s.set_came_last(side == last_in);
       s.set_report_gauges(row_due_);
       s.set_checkpoint(checkpoint);
+      s.set_interrupted(interrupted);
       const auto& a = side == kFluid ? forces.fluid_a : forces.solid_a;
       s.mutable_acceleration()->Resize(2 * static_cast<int>(a.size()), 0.0);
       std::copy_n(cp::doubles_of(a), 2 * a.size(), s.mutable_acceleration()->mutable_data());
@@ -395,13 +412,12 @@ class Session {
       }
     }
     messaging_seconds_ += std::chrono::duration<double>(Clock::now() - send_start).count();
-    if (checkpoint) {
-      next_checkpoint_ += settings_.run.checkpoint_interval;
-      write_checkpoint(step);
-    }
+    // An interruption's checkpoint is one more: the periodic ones keep their times.
+    if (due) next_checkpoint_ += settings_.run.checkpoint_interval;
+    if (checkpoint) write_checkpoint(step);
     // The last report is forced, so the launcher's summary names the end time.
-    progress_.report(t, step, dt, stop);
-    return stop;
+    progress_.report(t, step, dt, stop || interrupted);
+    return stop ? Next::end : interrupted ? Next::interrupted : Next::step;
   }
 
   // What decides the coupler's next answers and rows, taken after its answer

@@ -29,6 +29,7 @@
 #include "participant/protocol.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/gauge.hpp"
+#include "sphcore/output_lock.hpp"
 #include "sphcore/region.hpp"
 #include "sphcore/solver_cli.hpp"
 #include "sphcore/time_step.hpp"
@@ -255,6 +256,7 @@ int run_misbehaving(const DummyOptions& o, DummySolver& solver) {
 int run(int argc, char** argv) {
   const DummyOptions o = parse_options(argc, argv);
   sph::make_output_dir(o.out_dir);
+  sph::lock_output_dir(o.out_dir, o.endpoint, sph::command_line(argc, argv));
   sph::install_stop_handlers();
   DummySolver solver(o);
   if (o.version >= 0 || o.garbage_at >= 0) return run_misbehaving(o, solver);

@@ -8,6 +8,7 @@
 #include "fluid_solver.hpp"
 #include "participant/run_solver.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/output_lock.hpp"
 #include "sphcore/particle_budget.hpp"
 #include "sphcore/run_threads.hpp"
 #include "sphcore/solver_cli.hpp"
@@ -26,6 +27,7 @@ int run_fluid(int argc, char** argv) {
   sph::require(coupled || !case_file.config.has_solid(), case_file, "solid",
                "this case is coupled: run it with coupler/cosph, which starts the coupler");
   sph::make_output_dir(args.out_dir);
+  sph::lock_output_dir(args.out_dir, args.endpoint, sph::command_line(argc, argv));
   sph::install_stop_handlers();
 
   sph::RunThreads threads(parameters.run.threads);

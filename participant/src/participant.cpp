@@ -93,7 +93,7 @@ sph::Region Participant::connect(PhaseKind phase, const std::string& solver_name
 
 void Participant::send_state(long step, double time, double proposed_dt, const sph::Region& bounds,
                              double max_smoothing_length, const sph::InterfaceParticles& particles,
-                             const std::vector<sph::Gauge>& gauges) {
+                             const std::vector<sph::Gauge>& gauges, bool stop_requested) {
   Envelope message;
   InterfaceState& state = *message.mutable_state();
   state.set_step(static_cast<std::uint64_t>(step));
@@ -109,6 +109,7 @@ void Participant::send_state(long step, double time, double proposed_dt, const s
     g.set_value(gauge.value);
   }
   state.set_waiting(impl_->waited);
+  state.set_stop_requested(stop_requested);
   send(impl_->socket, message);
   impl_->sent = particles.size();
 }
@@ -131,6 +132,7 @@ StepReply Participant::await_step() {
   StepReply out{s.dt(), {}, {}, from_proto(s.send_region()), s.stop(), s.whole_step()};
   out.report_gauges = s.report_gauges();
   out.checkpoint = s.checkpoint();
+  out.interrupted = s.interrupted();
   out.acceleration.resize(static_cast<std::size_t>(s.acceleration_size() / 2));
   std::copy_n(s.acceleration().data(), 2 * out.acceleration.size(), doubles_of(out.acceleration));
   out.density_rate.assign(s.density_rate().begin(), s.density_rate().end());

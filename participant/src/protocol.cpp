@@ -170,15 +170,16 @@ bool poll_readable(zmq::socket_t& socket, std::chrono::milliseconds timeout) {
 
 // Waits in slices, so that a stop request (SIGINT or SIGTERM: Ctrl-C, or the
 // launcher's when another process failed) cuts what is left of the wait to
-// kStopGrace. In a sound run the message comes within milliseconds, and the
-// step ends cleanly (final snapshots, then the stop); a peer that died would
-// otherwise hold the wait for the whole timeout, past the launcher's grace,
-// and get this process killed. Any other signal interrupts the poll with
-// EINTR, and the wait goes on.
+// kStopGrace. In a sound run the message comes within milliseconds (the other
+// solver finishing its window), and the run stops cleanly at the coupler's
+// next step, every process writing its checkpoint and final snapshot; a peer
+// that died would otherwise hold the wait for the whole timeout, past the
+// launcher's grace (5 s after a failure), and get this process killed. Any
+// other signal interrupts the poll with EINTR, and the wait goes on.
 bool wait_readable(zmq::socket_t& socket, std::chrono::milliseconds timeout,
                    std::chrono::microseconds spin = std::chrono::microseconds(0)) {
   using std::chrono::milliseconds, std::chrono::steady_clock;
-  constexpr milliseconds kSlice{100}, kStopGrace{1000};
+  constexpr milliseconds kSlice{100}, kStopGrace{2000};
   const auto start = steady_clock::now();
   auto deadline = start + timeout;
   const auto spin_end = std::min(start + spin, deadline);

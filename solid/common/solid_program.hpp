@@ -14,6 +14,7 @@
 #include "participant/run_solver.hpp"
 #include "solid_parameters.hpp"
 #include "sphcore/case_file.hpp"
+#include "sphcore/output_lock.hpp"
 #include "sphcore/particle_budget.hpp"
 #include "sphcore/run_threads.hpp"
 #include "sphcore/solver_cli.hpp"
@@ -46,6 +47,7 @@ int run_solid_program(int argc, char** argv, const SolidProgram<Solver>& program
     sph::require(coupled || !case_file.config.has_fluid(), case_file, "fluid",
                  "this case is coupled: run it with coupler/cosph, which starts the coupler");
     sph::make_output_dir(args.out_dir);
+    sph::lock_output_dir(args.out_dir, args.endpoint, sph::command_line(argc, argv));
     sph::install_stop_handlers();
 
     sph::RunThreads threads(parameters.run.threads);

@@ -5,7 +5,7 @@
 // that fail: a solver that dies, hangs, sends garbage,
 // never connects, or speaks another protocol version. Each must end every
 // process with a message that names the reason, within the coupling timeout;
-// SIGTERM ends a coupler's wait for a silent solver within about a second.
+// SIGTERM ends a coupler's wait for a silent solver within two seconds.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -307,8 +307,8 @@ void expect_all_gone(std::initializer_list<ChildProcess*> processes) {
 }
 
 // SIGTERM (what the launcher sends when another process failed) stops a
-// coupler that is waiting for a solver that went quiet within about a
-// second, not at the end of the coupling timeout: otherwise the launcher
+// coupler that is waiting for a solver that went quiet within two
+// seconds, not at the end of the coupling timeout: otherwise the launcher
 // would have to kill it, and its socket file would stay behind.
 TEST_F(CouplerWithDummies, SigtermEndsACouplersWaitForASilentSolverAtOnce) {
   write_case(30.0);

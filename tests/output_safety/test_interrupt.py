@@ -1,5 +1,8 @@
 """Ctrl-C on a coupled run: every solver writes its final snapshot, whatever
 it was waiting for when the signal came, and the launcher exits with 130.
+All three processes take a checkpoint at the step the coupler stopped the
+run, whether the signal reached the launcher or one solver alone (the runs
+here take no periodic checkpoints: a checkpoint is the interruption's).
 
 Before, the solver that waited for the coupler got the coupler's "interrupted"
 error and exited without writing (3 of 4 tries in the fault-injection campaign
@@ -11,6 +14,7 @@ is the final snapshot of the interruption.
 
 Run by ctest (test "output_safety"); by hand:
 COSPH_BIN=build/bin /usr/bin/python3 -m unittest discover -s tests/output_safety -v"""
+import glob
 import os
 import shutil
 import signal
@@ -72,6 +76,13 @@ class CtrlCWritesEveryFinalSnapshot(unittest.TestCase):
             self.assertGreater(times[1], 0.0, f"{index}\n{log}")
             self.assertTrue(os.path.exists(index[:-len(".xdmf")] + "_000001.h5"))
 
+    def assert_one_checkpoint_set(self, out, log):
+        names = sorted(os.path.basename(p) for p in glob.glob(os.path.join(out, "checkpoints", "*")))
+        steps = {name.split("_")[1] for name in names}
+        self.assertEqual(len(steps), 1, f"{names}\n{log}")
+        self.assertEqual([name.split("_")[0] for name in names], ["coupler", "fluid", "solid"],
+                         log)
+
     def test_sigterm_to_one_solver_leaves_both_final_snapshots(self):
         out = os.path.join(self.root, "term")
         launcher, indexes = self.start_run(out, 1)
@@ -80,8 +91,9 @@ class CtrlCWritesEveryFinalSnapshot(unittest.TestCase):
         self.assertEqual(len(fluid), 1)
         os.kill(int(fluid[0]), signal.SIGTERM)
         log, _ = launcher.communicate(timeout=120)
-        self.assertNotEqual(launcher.returncode, 0, log)   # the fluid's 130, or another's 1
+        self.assertNotEqual(launcher.returncode, 0, log)   # 130, the first exit's
         self.assert_final_snapshots(indexes, log)
+        self.assert_one_checkpoint_set(out, log)
 
     def interrupt_run(self, out, substeps):
         launcher, indexes = self.start_run(out, substeps)
@@ -97,6 +109,7 @@ class CtrlCWritesEveryFinalSnapshot(unittest.TestCase):
                 code, log, indexes = self.interrupt_run(out, substeps)
                 self.assertEqual(code, 130, log)
                 self.assert_final_snapshots(indexes, log)
+                self.assert_one_checkpoint_set(out, log)
 
 
 if __name__ == "__main__":

@@ -19,6 +19,13 @@
 // for one, after the window that answer closes, and resumes from one
 // (docs/restart.md): its state, the answer in hand, and the counters.
 //
+// Ctrl-C or SIGTERM does not stop the solver where it is: it finishes its
+// window and says so with its state; the coupler, which may have been
+// signalled itself, answers that step with `interrupted` (and `checkpoint`),
+// and every process writes its checkpoint of that step, a final snapshot, and
+// exits with 130. If the coupler does not answer within a grace (it or the
+// other solver is gone), the solver writes its final snapshot and stops alone.
+//
 // What the solver must offer is the concept CoupledSolver
 // (coupled_solver.hpp); optionally set_interface_density_rates, and
 // advance_state with compute_forces (SplitsItsStep).
@@ -122,17 +129,22 @@ class CoupledRun {
     // checkpoint were written before.
     bool outputs_done = resuming;
     for (;;) {
+      bool snapshot_now = false;
       if (outputs_done) {
         outputs_done = false;
       } else {
         if (solver_.time() >= next_snapshot_ || reply.stop) {
           write_snapshot();
           next_snapshot_ += run_.snapshot_interval;
+          snapshot_now = true;
         }
         if (reply.stop) break;
         if (reply.checkpoint) write_checkpoint(reply);
+        if (reply.interrupted) return stop_interrupted(snapshot_now);
       }
-      if (sph::stop_requested()) {
+      if (stop_sent_) {
+        // A coupler that does not know the request (another build) went on:
+        // this solver stops alone, as it did before the coupler stopped runs.
         write_snapshot();
         participant_.report_error(settings_.name + " was interrupted (Ctrl-C or SIGTERM)");
         return 130;
@@ -185,9 +197,24 @@ class CoupledRun {
   void send_state(const sph::Region& region, double time, long step) {
     solver_.collect_interface(region, interface_);
     proposed_dt_ = solver_.step_limits().smallest();
+    stop_sent_ = sph::stop_requested();
     participant_.send_state(step, time, proposed_dt_, solver_.interaction_bounds(),
                             solver_.max_smoothing_length(), interface_,
-                            report_gauges_ ? solver_.gauge_values() : std::vector<sph::Gauge>{});
+                            report_gauges_ ? solver_.gauge_values() : std::vector<sph::Gauge>{},
+                            stop_sent_);
+  }
+
+  // The coupler stopped the run at this step for Ctrl-C or SIGTERM; the
+  // checkpoint it asked for is written. The final snapshot, unless one was
+  // due at this time anyway, is not in the checkpoint's list: a resume
+  // writes that snapshot number again.
+  int stop_interrupted(bool snapshot_now) {
+    if (!snapshot_now) write_snapshot();
+    std::cerr << settings_.name << ": interrupted (Ctrl-C or SIGTERM): stopped at coupling step "
+              << windows_ << " (t = " << solver_.time() << " s)"
+              << (sph::Checkpointable<Solver> ? ", with its checkpoint" : "") << "; final snapshot "
+              << last_snapshot_ << std::endl;
+    return 130;
   }
 
   StepReply await_step() {
@@ -299,6 +326,7 @@ class CoupledRun {
   double next_snapshot_ = 0.0;
   sph::CheckpointSettings checkpoints_;
   bool connected_ = false;  // the coupler welcomed this solver
+  bool stop_sent_ = false;  // the last state asked the coupler to stop the run
   std::string last_snapshot_ = "(none yet)";
   double last_time_ = 0.0;
 };

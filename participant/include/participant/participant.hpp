@@ -26,6 +26,7 @@ struct StepReply {
   bool whole_step;                      // take dt in one step, however long (a stability test)
   bool report_gauges = false;           // send gauges with the next state
   bool checkpoint = false;              // checkpoint at this step (docs/restart.md)
+  bool interrupted = false;             // Ctrl-C or SIGTERM: checkpoint, final snapshot, exit
 };
 
 class Participant {
@@ -48,9 +49,11 @@ class Participant {
 
   // One step's exchange, in two halves so that a solver can work between
   // them: its interface state out, then the coupler's answer for it in.
+  // stop_requested: Ctrl-C or SIGTERM reached this solver, and the coupler is
+  // to stop the run at this step (StepReply.interrupted).
   void send_state(long step, double time, double proposed_dt, const sph::Region& bounds,
                   double max_smoothing_length, const sph::InterfaceParticles& particles,
-                  const std::vector<sph::Gauge>& gauges);
+                  const std::vector<sph::Gauge>& gauges, bool stop_requested = false);
   StepReply await_step();
 
   // Best effort: tells the coupler why this solver stops, so the others stop too.

@@ -55,8 +55,8 @@ Envelope parse(std::string_view bytes, const std::string& from);
 
 // One-frame messages (DEALER side) and routed ones (ROUTER side: identity,
 // then the frame). Receives return nothing when the timeout passes; once a
-// stop is requested (sph::stop_requested()), they wait at most a second more:
-// the caller tells which.
+// stop is requested (sph::stop_requested()), they wait at most two seconds
+// more: the caller tells which.
 void send(zmq::socket_t& socket, const Envelope& envelope);
 // dontwait: drop the message rather than wait for a peer that does not read.
 void send_to(zmq::socket_t& socket, const std::string& identity, const Envelope& envelope,
