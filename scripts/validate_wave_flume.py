@@ -125,10 +125,12 @@ def measure(out, period, spacing, label, run_settings, reuse, reflection):
            f"{t_from:.2f}-{t_to:.2f}", f"{1e3 * theory:.2f}", f"{1e3 * height:.2f}",
            f"{100 * error:+.1f} %", "yes" if abs(error) <= GOAL else "no",
            f"{1e3 * incident:.2f} ({100 * (incident / theory - 1):+.1f} %)",
+           f"{reflected / incident:.2f}",
            f"{far / height:.2f}" + (" (1 period)" if far_to - far_from < 2 * period - 1e-9 else "")
            if far else "-",
            f"{battjes:.2f}",
-           f"{late_reflected / late_incident:.2f} ({late_from:.1f}-{late_to:.1f} s)" if late else "-",
+           (f"{late_reflected / late_incident:.2f} ({late_from:.1f}-{late_to:.1f} s)"
+            if late else "-"),
            f"{mean_nearest_distance(out, spacing):.2f}",
            int(series["water_particles"][0]), f"{wall:.0f} s" if wall else "-"]
     return row, series, (t_from, t_to), late, height, error, theory, depth
@@ -153,30 +155,32 @@ def main():
     if args.previous:
         runs.append((DEFAULT_SPACING, "previous: cubic spline, h = 1.3 dx, A = 0.02",
                      [f"fluid.{key}={value}" for key, value in PREVIOUS.items()]))
-    fig, axes = plt.subplots(len(args.periods), 1, figsize=(9, 3.0 * len(args.periods)),
+    fig, axes = plt.subplots(len(args.periods), 1, figsize=(13, 3.0 * len(args.periods)),
                              squeeze=False)
     rows = []
     for ax, period in zip(axes[:, 0], args.periods):
+        late_window = None  # the runs that measured the reflection share it
         for spacing, label, settings in runs + (finer if period == args.periods[0] else []):
             name = f"T_{period:g}_dx_{spacing:g}" + ("_previous" if settings else "")
             # The previous settings are there for the height only.
             row, series, (t_from, t_to), late, height, error, theory, depth = measure(
                 os.path.join(args.out, name), period, spacing, label, settings, args.reuse,
                 args.reflection and not settings)
+            late_window = late or late_window
             rows.append(row)
             ax.plot(series["t"], 1e3 * (series["level0"] - depth), lw=0.8,
                     ls=":" if settings else "-",
                     label=f"dx = {1e3 * spacing:g} mm{', ' + label if settings else ''}: "
                           f"H = {1e3 * height:.1f} mm ({100 * error:+.1f} %)")
         ax.axvspan(t_from, t_to, color="C7", alpha=0.12, label="fitted window")
-        if late:
-            ax.axvspan(*late, color="C1", alpha=0.12, label="reflection window")
+        if late_window:
+            ax.axvspan(*late_window, color="C1", alpha=0.12, label="reflection window")
         for sign in (1, -1):
             ax.axhline(sign * 500 * theory, color="k", ls="--", lw=0.8,
                        label="Biesel: H/2 = %.1f mm" % (500 * theory) if sign > 0 else None)
         ax.set(xlabel="t (s)", ylabel="eta at x = 1 m (mm)",
                title=f"Wave flume, T = {period:g} s, S = {2e3 * AMPLITUDE:g} mm")
-        ax.legend(fontsize=7, loc="lower left")
+        ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
     os.makedirs(cr.FIGURES, exist_ok=True)
     figure = os.path.join(cr.FIGURES, "wave_flume.png")
@@ -185,7 +189,8 @@ def main():
         "wave_flume",
         ["spacing (mm)", "run", "period T (s)", "still depth d (mm)", "kd", "window (s)",
          "Biesel H (mm)", "cosph H (mm)", "error", "within 5 %",
-         "incident H, gauges at 1 and 1.3 m (mm)", "H at 2 m / H at 1 m",
+         "incident H, gauges at 1 and 1.3 m (mm)", "reflected / incident, same window",
+         "H at 2 m / H at 1 m",
          "Battjes Kr", "measured Kr (window)",
          "nearest neighbour / dx", "water particles", "wall time"],
         rows,

@@ -9,9 +9,9 @@ reflection from the beach's shoreline could be back at the gauge. Asserts
 - waves arrive, between 90 and 105 % of Biesel's height for that depth: at
   this spacing the waves are less than a spacing high and measured 5 % low
   (docs/validation.md, "Wave flume"); with the previous settings (cubic
-  spline, whose particles pair up over these seconds) they were 25 to 30 %
-  low, and with the Wendland kernel at h = 1.3 dx about 15 % low, which the
-  bound refuses.
+  spline, whose particles pair up over these seconds) they were 16 to 24 %
+  low at 10 mm, and with the Wendland kernel at h = 1.3 dx about 15 % low,
+  which the bound refuses.
 """
 import os
 import shutil
