@@ -82,9 +82,12 @@ def case_results():
          text(fracture, lambda r: f"first failure at t = {r['first failure t (s)']} s, the piece "
               f"free by {r['piece free by t (s)']} s, its centre at x = {r['broken_x at end (m)']} m at the end"),
          "validation.md#fracture-the-plate-broken-by-the-flow-scene-3"),
-        ("[wave flume](cases/wave_flume.pbtxt)", "a piston wave maker, waves down a flume",
+        ("[wave flume](cases/wave_flume.pbtxt)", "a piston wave maker, waves down a flume to a beach",
          text(flume, lambda rows: "wave height against Biesel's linear theory: " + ", ".join(
-             f"{r['error']} at T = {r['period T (s)']} s" for r in rows) + " at 10 mm"),
+             f"{r['error']} at T = {r['period T (s)']} s" for r in rows) + " at 10 mm"
+             + ("; the beach reflects " + ", ".join(
+                 r["measured Kr (window)"].split()[0] for r in rows) + " of the height"
+                if all(r.get("measured Kr (window)", "-") != "-" for r in rows) else "")),
          "validation.md#wave-flume-a-piston-wave-maker"),
     ]
     lines = ["| case | what | result | details |", "|---|---|---|---|"]
