@@ -362,8 +362,8 @@ TEST(Shell, ClampedPlateUnderUniformLoadMatchesTimoshenko) {
     double exact = 0.0;
     const double w = clamped_plate_mean_deflection(along, g, &exact);
     errors.push_back(w / exact - 1.0);
-    std::printf("clamped-clamped shell, %d along: %.5e m, Timoshenko %.5e m (%+.2f %%)\n", along,
-                w, exact, 100.0 * errors.back());
+    std::printf("clamped-clamped shell, %d along: %.5e m, Timoshenko %.5e m (%+.2f %%)\n", along, w,
+                exact, 100.0 * errors.back());
   }
   EXPECT_LT(std::abs(errors[0]), 0.02);
   EXPECT_LT(std::abs(errors[2]), 0.002);
