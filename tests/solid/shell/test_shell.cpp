@@ -1,7 +1,8 @@
 // The reduced-dimension shell (solid/shell): the thin-box rule refuses a thick
 // body, the section the water sees (geometry, and forces back as force and
-// moment), no zero-energy mode, and the Antoci plate's first-mode period at 8
-// particles along.
+// moment), no zero-energy mode, the Antoci plate's first-mode period at 8
+// particles along, the elastica, and a plate clamped at both ends under its
+// own weight (run.gravity) against Timoshenko's static deflection.
 #include <gtest/gtest.h>
 
 #include <array>
