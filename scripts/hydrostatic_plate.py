@@ -10,7 +10,8 @@ Theory (plane strain, the plate a beam of unit width):
   w_T  = w_EB + q L^2 / (8 kappa G e)   Timoshenko: plus the shear deflection,
                                         G = E / (2 (1 + nu)), kappa = 5/6
 The target is w_T: the 2-D solid deforms in shear as an elastic continuum
-does, which adds 8 e^2 / ((1 - nu) kappa L^2) = 3.6 % to w_EB at e / L = 1/20.
+does, and the shell (the case's model) is a Timoshenko beam with the same
+kappa; shear adds 8 e^2 / ((1 - nu) kappa L^2) = 3.6 % to w_EB at e / L = 1/20.
 w_EB, the value Fourey et al. 2017 compare with, is shown beside it.
 
 The static value is read from a run as the mean of the mid-span deflection
@@ -62,12 +63,24 @@ def column_period(p=None):
     return 4.0 * H / (10.0 * math.sqrt(2.0 * p["gravity_g"] * H))
 
 
-def settled_deflection(t, tip_dy, periods=2):
-    """m, positive downward: -tip_dy averaged over the run's last PERIODS
-    column periods (the samples evenly spaced); nan if the run is shorter."""
-    t, tip_dy = np.asarray(t), np.asarray(tip_dy)
+def settled_mean(t, values, periods=2):
+    """The mean of VALUES over the run's last PERIODS column periods (the
+    samples evenly spaced); nan if the run is shorter."""
+    t, values = np.asarray(t), np.asarray(values)
     start = t[-1] - periods * column_period()
     if start < 0.0:
         return float("nan")
-    taken = t >= start
-    return float(-np.mean(tip_dy[taken]))
+    return float(np.mean(values[t >= start]))
+
+
+def settled_deflection(t, tip_dy, periods=2):
+    """m, positive downward: -tip_dy averaged over the run's last PERIODS
+    column periods; nan if the run is shorter."""
+    return -settled_mean(t, tip_dy, periods)
+
+
+def water_load(p=None):
+    """N/m: the water's weight on the span, rho g H L, what the pressure on
+    the plate's upper face adds up to at rest."""
+    p = p or parameters()
+    return p["water_density_rho"] * p["gravity_g"] * p["water_depth_H"] * p["span_L"]

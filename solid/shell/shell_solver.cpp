@@ -71,6 +71,9 @@ void ShellSolver::update() {
   ShellParticles& P = particles_;
   compute_strains(P, forces_);
   compute_accelerations(P);
+  // Gravity acts on the section's mass, on its centre line: no moment.
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (!P.clamped[i]) P.a[i] += parameters_.run.gravity;
   // The end particle sits on the free end: the load acts on it.
   if (end_load_ && !P.clamped[end_load_->particle])
     P.a[end_load_->particle] += end_load_->at(time_) / P.m[end_load_->particle];

@@ -11,6 +11,8 @@
 // Step from t to t + dt, kick-drift-kick on position and rotation alike:
 //   v += dt/2 a, omega += dt/2 alpha;  x += dt v, theta += dt omega;
 //   strains, resultants;  a, alpha;  v += dt/2 a, omega += dt/2 alpha
+// with run.gravity added to every free particle's a (it acts on the centre
+// line, so it makes no moment).
 //
 // Stable step (step_limits): the explicit step of SPEC.md on the axial wave,
 // and the shear-rotation cut-off frequency of the Timoshenko beam,
