@@ -7,12 +7,12 @@ hydrostatically to the probe's height. A larger h widens that support, and a
 one-sided mean next to a pressure maximum (the floor corner, where the flow
 along the floor stagnates) reads low by an amount that grows with the support:
 a measurement artifact. Or the water itself is different there. This script
-tells the two apart on the dam break at 4 mm, the default run and the run with
-the Wendland C2 kernel at h = 2 dx, both with snapshots every 2.5 ms over
-t = 0.35-0.55 s:
-  - the sensor re-evaluated on each run's snapshots with either run's kernel
-    and support: if the support made the difference, the default's sensor on
-    the h = 2 dx run's water would read the default's mean;
+tells the two apart on the dam break at 4 mm, the default run and the runs with
+the Wendland C2 kernel at h = 2 dx (delta-SPH, Riemann), with snapshots every
+2.5 ms over t = 0.35-0.55 s:
+  - the sensor re-evaluated on each run's snapshots with either kernel and
+    support: if the support made the difference, the default's sensor on
+    the h = 2 dx runs' water would read the default's mean;
   - the water's pressure beside the far wall (8-40 mm up, corrected
     hydrostatically to the sensor's 16 mm) against distance from the wall;
   - the mean horizontal velocity of the water flowing along the floor towards
@@ -37,11 +37,15 @@ import validate_dam_break as dam
 
 SPACING = 0.004
 PROBE = np.array([0.576, 0.016])  # probe1, cases/dam_break.pbtxt
-RUNS = [  # (key, label, settings, kernel, h)
-    ("default", "delta-SPH, cubic spline, h = 1.3 dx (the default)", [], "cubic_spline",
-     1.3 * SPACING),
-    ("wendland_2dx", "delta-SPH, Wendland C2, h = 2 dx", pn.WENDLAND_2DX, "wendland_c2",
-     2.0 * SPACING),
+RUNS = [  # (key, label, settings)
+    ("default", "delta-SPH, cubic spline, h = 1.3 dx (the default)", []),
+    ("wendland_2dx", "delta-SPH, Wendland C2, h = 2 dx", pn.WENDLAND_2DX),
+    ("riemann_wendland_2dx", "Riemann, Wendland C2, h = 2 dx",
+     ["fluid.dissipation=riemann"] + pn.WENDLAND_2DX),
+]
+SUPPORTS = [  # (label, kernel, h): the sensor's, as in the runs
+    ("cubic spline, h = 1.3 dx (the default)", "cubic_spline", 1.3 * SPACING),
+    ("Wendland C2, h = 2 dx", "wendland_c2", 2.0 * SPACING),
 ]
 SNAPSHOT_INTERVAL = 0.0025  # s: 80 snapshots over the window
 WATER = 0  # the snapshots' kind of a water particle
@@ -79,13 +83,13 @@ def snapshots(folder):
 
 
 def measure(folder):
-    readings = {key: [] for key, *_ in RUNS}
+    readings = [[] for _ in SUPPORTS]
     pressure_sum = np.zeros(len(DISTANCE_BINS) - 1)
     counts = np.zeros(len(DISTANCE_BINS) - 1)
     u, dynamic = [], []
     for snapshot in snapshots(folder):
-        for key, _, _, kernel, h in RUNS:
-            readings[key].append(sensor(snapshot, kernel, h))
+        for reading, (_, kernel, h) in zip(readings, SUPPORTS):
+            reading.append(sensor(snapshot, kernel, h))
         water = snapshot["kind"][:] == WATER
         x = snapshot["position"][:, :2][water]
         p, rho = snapshot["pressure"][:][water], snapshot["density"][:][water]
@@ -100,7 +104,7 @@ def measure(folder):
         v = snapshot["velocity"][:, :2][water][flowing]
         u.append(np.mean(v[:, 0]))
         dynamic.append(0.5 * np.mean(v[:, 0]) ** 2 / (dam.G * dam.H))
-    return ({key: np.mean(values) / dam.RHO0_G_H for key, values in readings.items()},
+    return ([np.mean(values) / dam.RHO0_G_H for values in readings],
             pressure_sum / np.maximum(counts, 1) / dam.RHO0_G_H, float(np.mean(u)),
             float(np.mean(dynamic)), len(u))
 
@@ -112,7 +116,7 @@ def main():
     args = parser.parse_args()
 
     rows = []
-    for key, label, settings, _, _ in RUNS:
+    for key, label, settings in RUNS:
         folder = os.path.join(args.out, key)
         os.makedirs(folder, exist_ok=True)
         if not (args.reuse and os.path.exists(os.path.join(folder, "timeseries.csv"))):
@@ -123,7 +127,7 @@ def main():
         series = cr.read_csv(os.path.join(folder, "timeseries.csv"))
         readings, profile, u, dynamic, count = measure(folder)
         rows.append([label, f"{dam.sensor_noise(series, 'probe1')[0]:.3f}",
-                     *(f"{readings[k]:.3f}" for k, *_ in RUNS),
+                     *(f"{value:.3f}" for value in readings),
                      ", ".join(f"{v:.3f}" for v in profile), f"{u:.2f}", f"{dynamic:.3f}",
                      f"{pn.far_wall_force_noise(series)[0]:.3f}"])
         print(rows[-1], count, "snapshots", flush=True)
@@ -131,16 +135,16 @@ def main():
     path = cr.write_table(
         "sensor_support",
         ["run (4 mm)", "far-wall sensor: mean (timeseries)",
-         *(f"sensor re-read with the support of: {label.split(',')[1].strip()}, "
-           f"{label.split(',')[2].strip()}" for _, label, *_ in RUNS),
+         *(f"sensor re-read with: {label}" for label, _, _ in SUPPORTS),
          f"water pressure beside the far wall at {centres} mm from it",
          "u of the water flowing to the corner (m/s)", "0.5 u^2 / (g H)",
          "far-wall force: mean"],
         rows,
         preamble="The far-wall sensor's mean after the impact (t = "
                  f"{dam.AFTER_IMPACT[0]:g}-{dam.AFTER_IMPACT[1]:g} s), over rho0 g H, with "
-                 "its own kernel and support and re-read on the same snapshots (every "
-                 f"{1e3 * SNAPSHOT_INTERVAL:g} ms) with the other run's; the water's pressure "
+                 "its own kernel and support (timeseries) and re-read on the same snapshots "
+                 f"(every {1e3 * SNAPSHOT_INTERVAL:g} ms) with either kernel and support; the "
+                 "water's pressure "
                  f"{1e3 * BESIDE_WALL[0]:g}-{1e3 * BESIDE_WALL[1]:g} mm up, corrected "
                  "hydrostatically to the sensor's height, against distance from the far wall, "
                  "over rho0 g H; the mean horizontal velocity u of the water flowing along the "
