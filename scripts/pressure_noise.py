@@ -120,7 +120,7 @@ def steps_per_second(series):
 
 
 def draw(rows, cost, path):
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
+    fig, axes = plt.subplots(1, 2, figsize=(11, 6.4))
     for ax, (measure, ylabel) in zip(axes, (("far_wall", "far-wall sensor noise / (rho0 g H)"),
                                             ("force", "far-wall force noise / (rho0 g H^2)"))):
         for k, (key, label, _) in enumerate(OPTIONS):
@@ -138,8 +138,9 @@ def draw(rows, cost, path):
                       "one thread)", ylabel=ylabel)
     axes[0].set_title("Dam break after the impact: the sensor 16 mm up the far wall", fontsize=9)
     axes[1].set_title("... and the whole far wall's load", fontsize=9)
-    axes[0].legend(fontsize=5.5, ncol=1)
-    fig.tight_layout()
+    handles, labels = axes[0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=6.5)
+    fig.tight_layout(rect=(0, 0.24, 1, 1))
     fig.savefig(path, dpi=110)
 
 
