@@ -31,6 +31,10 @@ import cosph_results as cr  # noqa: E402
 import validate_dam_break as dam  # noqa: E402
 
 WENDLAND = ["fluid.kernel=wendland_c2", "fluid.h_factor=1.5"]
+# h = 2 dx: Colagrossi et al. 2013's rule for free-surface gravity flows, as the
+# wave flume uses (cases/wave_flume.pbtxt); the dam break's walls are >= 2h deep
+# for it at 8 mm and finer.
+WENDLAND_2DX = ["fluid.kernel=wendland_c2", "fluid.h_factor=2.0"]
 OPTIONS = [  # (key, label, settings)
     ("delta_sph", "delta-SPH (Marrone et al. 2011), the default", []),
     ("fourtakas", "hydrostatic-free diffusion (Fourtakas et al. 2019)",
@@ -46,6 +50,9 @@ OPTIONS = [  # (key, label, settings)
     ("riemann_wendland", "Riemann, Wendland C2 kernel", ["fluid.dissipation=riemann"] + WENDLAND),
     ("riemann_shifting", "Riemann and delta-plus shifting",
      ["fluid.dissipation=riemann", "fluid.shifting=delta_plus"]),
+    ("wendland_2dx", "delta-SPH, Wendland C2, h = 2 dx", WENDLAND_2DX),
+    ("riemann_wendland_2dx", "Riemann, Wendland C2, h = 2 dx",
+     ["fluid.dissipation=riemann"] + WENDLAND_2DX),
 ]
 SPACINGS = [0.008, 0.004]
 BENCH_STEPS = 400
@@ -86,21 +93,38 @@ def bench_ms_per_step(settings, spacing):
 
 
 def costs(repeats, spacing):
-    """{key: median ms per step}, the options timed in turn, REPEATS rounds."""
-    times = {key: [] for key, _, _ in OPTIONS}
-    for _ in range(repeats):
-        for key, _, settings in OPTIONS:
-            times[key].append(bench_ms_per_step(settings, spacing))
-    return {key: float(np.median(values)) for key, values in times.items()}
+    """{key: (median ms per step, median of its ratios to the default's, lowest
+    ratio, highest)}: each option timed in REPEATS pairs with the default, the
+    two alternating, so that the shared machine's load falls on both alike."""
+    default = []
+    result = {}
+    for key, _, settings in OPTIONS:
+        if key == "delta_sph":
+            continue
+        times, ratios = [], []
+        for _ in range(repeats):
+            default.append(bench_ms_per_step([], spacing))
+            times.append(bench_ms_per_step(settings, spacing))
+            ratios.append(times[-1] / default[-1])
+        result[key] = (float(np.median(times)), float(np.median(ratios)), min(ratios),
+                       max(ratios))
+    result["delta_sph"] = (float(np.median(default)), 1.0, 1.0, 1.0)
+    return result
+
+
+def steps_per_second(series):
+    """Steps per simulated second over the whole run, from its time step
+    column sampled every output interval."""
+    t, dt = series["t"], series["dt"]
+    return float(np.sum(np.diff(t) / dt[1:]) / (t[-1] - t[0]))
 
 
 def draw(rows, cost, path):
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
-    default = cost["delta_sph"]
+    fig, axes = plt.subplots(1, 2, figsize=(11, 6.4))
     for ax, (measure, ylabel) in zip(axes, (("far_wall", "far-wall sensor noise / (rho0 g H)"),
                                             ("force", "far-wall force noise / (rho0 g H^2)"))):
         for k, (key, label, _) in enumerate(OPTIONS):
-            relative = cost[key] / default
+            relative = cost[key][1]
             for dx, marker in zip(SPACINGS, ("o", "s")):
                 if (key, dx) not in rows:
                     continue
@@ -114,8 +138,9 @@ def draw(rows, cost, path):
                       "one thread)", ylabel=ylabel)
     axes[0].set_title("Dam break after the impact: the sensor 16 mm up the far wall", fontsize=9)
     axes[1].set_title("... and the whole far wall's load", fontsize=9)
-    axes[0].legend(fontsize=5.5, ncol=1)
-    fig.tight_layout()
+    handles, labels = axes[0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=6.5)
+    fig.tight_layout(rect=(0, 0.24, 1, 1))
     fig.savefig(path, dpi=110)
 
 
@@ -125,7 +150,7 @@ def main():
     parser.add_argument("--reuse", action="store_true",
                         help="read the runs already in --out; run only the missing ones")
     parser.add_argument("--repeats", type=int, default=5,
-                        help="rounds of the cost measurement (the median is taken)")
+                        help="pairs (option, default) of the cost measurement per option")
     args = parser.parse_args()
 
     experiment = cr.reference("martin_moyce_n2_front.csv")
@@ -143,35 +168,48 @@ def main():
                                "force": far_wall_force_noise(series),
                                "floor": dam.sensor_noise(series, "probe0"),
                                "front": front_error(series, experiment),
-                               "spray": cr.spray_removed(series)}
+                               "spray": cr.spray_removed(series),
+                               "steps_per_s": steps_per_second(series)}
             print(key, dx, rows[(key, dx)], flush=True)
         os.makedirs(os.path.join(args.out, f"{key}_still_tank"), exist_ok=True)
         series = run(os.path.join(args.out, f"{key}_still_tank"), settings + dam.STILL_TANK,
                      args.reuse)
         rows[(key, "still")] = {"floor": dam.sensor_noise(series, "probe0")}
     cost = costs(args.repeats, SPACINGS[-1])
-    print("ms per step:", cost, flush=True)
+    print("ms per step, its ratio to the default's (median, lowest, highest):", cost, flush=True)
+
+    def per_step(key):
+        ms, ratio, lowest, highest = cost[key]
+        return f"{ms:.3f} ({ratio:.2f}; {lowest:.2f}-{highest:.2f})"
+
+    def per_simulated_second(key):
+        """CPU seconds per simulated second at the finest spacing: the cost per
+        step times the steps the run took (a larger h takes longer steps)."""
+        fine, default = rows.get((key, SPACINGS[-1])), rows[("delta_sph", SPACINGS[-1])]
+        if fine is None:
+            return ""
+        ratio = cost[key][1] * fine["steps_per_s"] / default["steps_per_s"]
+        return f"{cost[key][0] * fine['steps_per_s'] / 1e3:.1f} ({ratio:.2f})"
 
     table = []
-    default = cost["delta_sph"]
     for key, label, _ in OPTIONS:
         for dx in SPACINGS:
+            finest = dx == SPACINGS[-1]
             if (key, dx) not in rows:
                 table.append([label, f"{dx * 1e3:g}", "not run: no quieter than the default at "
                               f"{SPACINGS[0] * 1e3:g} mm", "", "", "", "", "", "", "",
-                              f"{cost[key]:.3f} ({cost[key] / default:.2f})"
-                              if dx == SPACINGS[-1] else ""])
+                              per_step(key) if finest else "", ""])
                 continue
             r = rows[(key, dx)]
             table.append([label, f"{dx * 1e3:g}", f"{r['far_wall'][0]:.3f}",
                           f"{r['far_wall'][1]:.3f}", f"{r['force'][0]:.3f}", f"{r['force'][1]:.3f}",
                           f"{r['floor'][0]:.3f}", f"{r['floor'][1]:.3f}",
                           f"{100 * r['front']:.1f} %", r["spray"],
-                          f"{cost[key]:.3f} ({cost[key] / default:.2f})" if dx == SPACINGS[-1]
-                          else ""])
+                          per_step(key) if finest else "",
+                          per_simulated_second(key) if finest else ""])
         still = rows[(key, "still")]["floor"]
         table.append([label, "still tank, 8", "", "", "", "", f"{still[0]:.3f}", f"{still[1]:.3f}",
-                      "", "", ""])
+                      "", "", "", ""])
     figure = os.path.join(cr.FIGURES, "pressure_noise.png")
     draw(rows, cost, figure)
     path = cr.write_table(
@@ -179,7 +217,8 @@ def main():
         ["option", "spacing (mm)", "far-wall sensor: mean", "noise", "far-wall force: mean",
          "noise", "floor sensor: mean", "noise",
          "front: RMS rel. error", "water left as spray",
-         f"ms per step at {SPACINGS[-1] * 1e3:g} mm (/ default)"],
+         f"ms per step at {SPACINGS[-1] * 1e3:g} mm (/ default: median; range)",
+         "CPU s per simulated s (/ default)"],
         table,
         preamble="The dam break's pressure sensors after the impact (t = "
                  f"{dam.AFTER_IMPACT[0]:g}-{dam.AFTER_IMPACT[1]:g} s) for each option of "
@@ -189,7 +228,10 @@ def main():
                  "rho0 g H^2, at 4 mm for the options quieter at 8 mm than the default; "
                  "the front's RMS relative error against Martin & Moyce "
                  "(T <= 3.1); the fluid's cost per step alone (`cosph-bench --cpu`, one thread, "
-                 f"{BENCH_STEPS} steps, the options in turn, median of {args.repeats}). "
+                 f"{BENCH_STEPS} steps; each option in {args.repeats} pairs with the default, "
+                 "the two alternating on the shared machine: median ms, and the median, lowest "
+                 "and highest of the pairs' ratios), and per simulated second (the cost per step "
+                 "times the steps the 4 mm run took: a larger h takes longer steps). "
                  "Produced by `scripts/pressure_noise.py`.")
     print(open(path).read())
     print("wrote", figure)

@@ -80,7 +80,7 @@ TEST(BadInput, UnknownOverrideNamesTheField) {
 TEST(BadInput, WallsThatDoNotCloseAreRefused) {
   ScratchDir dir("bad_input");
   const std::string path = written_dam_break(
-      dir, "no_right_wall.pbtxt", "  walls { min { x: 0.576 y: 0 } max { x: 0.6 y: 0.4 } }", "");
+      dir, "no_right_wall.pbtxt", "  walls { min { x: 0.576 y: 0 } max { x: 0.616 y: 0.4 } }", "");
   const std::string err = refusal(path);
   EXPECT_TRUE(contains(err, path + ": fluid.walls: do not close fluid.water[0]")) << err;
   EXPECT_TRUE(contains(err, "to the right")) << err;
@@ -114,7 +114,7 @@ TEST(BadInput, WaterOverlappingTheSolidIsRefused) {
 
 TEST(BadInput, WallThinnerThanTheSupportIsRefused) {
   // The right wall cut to 10 mm, less than 2h = 20.8 mm.
-  const std::string err = refusal(kDamBreak, {"fluid.walls[2].min.x=0.59"});
+  const std::string err = refusal(kDamBreak, {"fluid.walls[2].min.x=0.606"});
   EXPECT_TRUE(contains(err, kDamBreak + ": fluid.walls[2]: is 0.01 m thick")) << err;
   EXPECT_TRUE(contains(err, "2h")) << err;
 }

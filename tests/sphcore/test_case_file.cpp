@@ -78,7 +78,7 @@ TEST(CaseFileOverride, SetsNestedAndIndexedFields) {
   EXPECT_DOUBLE_EQ(c.config.fluid().water(0).max().x(), 0.2);
   EXPECT_DOUBLE_EQ(c.config.fluid().water(0).max().y(), 0.288);  // untouched
   EXPECT_DOUBLE_EQ(c.config.fluid().walls(2).min().x(), 0.55);
-  EXPECT_DOUBLE_EQ(c.config.fluid().walls(1).min().x(), -0.024);  // untouched
+  EXPECT_DOUBLE_EQ(c.config.fluid().walls(1).min().x(), -0.04);  // untouched
   EXPECT_DOUBLE_EQ(c.config.fluid().spacing(), 0.004);
   EXPECT_EQ(c.config.title(), "short");
   EXPECT_DOUBLE_EQ(c.config.run().gravity().x(), 1.0);
