@@ -61,6 +61,9 @@ class ShellSolver : public sph::ParticleSolver<ShellSolver, ShellParticles, Soli
   void set_interface_accelerations(const std::vector<Vec2>& accelerations);
   sph::Region interaction_bounds() const;
   std::vector<sph::Gauge> gauge_values() const;
+  // Without its damping (solid.shell_damping false) the shell dissipates
+  // nothing, and says so in its Hello (coupling.proto, undamped_modes).
+  bool undamped_modes() const { return !forces_.damping.any(); }
 
   // For tests: the state set directly (particles()), then update() for
   // strains and forces.

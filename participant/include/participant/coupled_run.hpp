@@ -114,7 +114,8 @@ class CoupledRun {
     if (resuming) reply = resume();
     sph::Region region = participant_.connect(
         settings_.phase, settings_.solver_description, solver_.particles().size(),
-        solver_.max_smoothing_length(), solver_.interaction_bounds(), resuming ? windows_ : -1);
+        solver_.max_smoothing_length(), solver_.interaction_bounds(), resuming ? windows_ : -1,
+        has_undamped_modes(solver_));
     connected_ = true;
     sph::ProgressReporter progress(run_.end_time);
     if (!resuming) reply = exchange(region, solver_.time(), windows_);

@@ -49,4 +49,19 @@ concept SplitsItsStep = requires(Solver& solver, double dt) {
   solver.compute_forces();
 };
 
+// Optional: a solver that may carry no dissipation for its fastest modes
+// says so (Hello field undamped_modes); one without the member damps them.
+template <class Solver>
+concept ReportsUndampedModes = requires(const Solver& solver) {
+  { solver.undamped_modes() } -> std::convertible_to<bool>;
+};
+
+template <class Solver>
+bool has_undamped_modes(const Solver& solver) {
+  if constexpr (ReportsUndampedModes<Solver>)
+    return solver.undamped_modes();
+  else
+    return false;
+}
+
 }  // namespace cosph::coupling
