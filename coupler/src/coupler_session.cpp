@@ -13,11 +13,11 @@
 #include "message_limits.hpp"
 #include "participant/bound_ipc_file.hpp"
 #include "participant/protocol.hpp"
-#include "substep_choice.hpp"
 #include "sphcore/gauge.hpp"
 #include "sphcore/region.hpp"
 #include "sphcore/run_control.hpp"
 #include "sphcore/timeseries_writer.hpp"
+#include "substep_choice.hpp"
 #include "zap_handler.hpp"
 
 namespace cosph::coupler {

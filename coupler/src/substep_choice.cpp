@@ -88,7 +88,7 @@ SubstepChoice read_substep_choice(const sph::CaseFile& case_file) {
 }
 
 SubstepChoice account_for_undamped_modes(const SubstepChoice& choice, bool undamped_modes,
-                                        const std::string& solid_name) {
+                                         const std::string& solid_name) {
   const bool automatic_multi_rate = choice.added_mass_ratio >= 0.0 && choice.max_substeps > 1;
   if (!undamped_modes || !automatic_multi_rate) return choice;
   return {1, choice.added_mass_ratio,

@@ -71,7 +71,7 @@ SubstepChoice read_substep_choice(const sph::CaseFile& case_file);
 // multi-rate choice becomes synchronised; an explicit max_substeps and a
 // choice that is synchronised already are returned unchanged.
 SubstepChoice account_for_undamped_modes(const SubstepChoice& choice, bool undamped_modes,
-                                        const std::string& solid_name);
+                                         const std::string& solid_name);
 
 // The thinnest of the case's solid.body regions, in m (0 without any): the
 // plate's thickness e, the lightest mass per unit of interface. A region's

@@ -31,7 +31,7 @@ namespace cosph::solid::shell {
 
 struct ShellForceParameters {
   ShellSection section;
-  double phi0;  // reference angle of the line's tangent
+  double phi0;           // reference angle of the line's tangent
   ShellDamping damping;  // none: all zero
 };
 

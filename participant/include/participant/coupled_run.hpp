@@ -113,7 +113,7 @@ class CoupledRun {
     StepReply reply{};
     if (resuming) reply = resume();
     sph::Region region = participant_.connect(
-        settings_.phase, settings_.solver_description, solver_.particles().size(),
+        settings_.phase, settings_.solver_description, announced_particle_count(solver_),
         solver_.max_smoothing_length(), solver_.interaction_bounds(), resuming ? windows_ : -1,
         has_undamped_modes(solver_));
     connected_ = true;

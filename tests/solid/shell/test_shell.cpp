@@ -290,7 +290,8 @@ TEST(Shell, DampingStopsTheShearRotationMode) {
       if (!P.clamped[i]) P.theta[i] = 1e-3;
     solver.update();
     const double start = total_energy(P);
-    const double period = 2.0 * std::numbers::pi / solver.force_parameters().section.rotation_frequency();
+    const double period =
+        2.0 * std::numbers::pi / solver.force_parameters().section.rotation_frequency();
     while (solver.time() < 10.0 * period) solver.step(solver.step_limits().smallest());
     const double ratio = total_energy(P) / start;
     // Damped: zeta about 0.4 at this spacing (h > t), exp(-2 zeta omega_r t) ~ 1e-21 after ten
