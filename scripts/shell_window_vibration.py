@@ -37,6 +37,27 @@ def rotation_frequency():
     return math.sqrt(SHEAR_CORRECTION * G * THICKNESS / (RHO * THICKNESS ** 3 / 12.0))
 
 
+def damping_ratios():
+    """The damping's ratios by its rule (solid/shell/shell_damping.hpp), h = 1.3 dx:
+    the first bending mode of the free length L = 0.079 m (Euler-Bernoulli,
+    plane strain) at the case's 1 mm, and the shear-rotation cut-off at the
+    mid-line spacings of the convergence runs, in words."""
+    E_plane, G = E / (1.0 - NU ** 2), E / (2.0 * (1.0 + NU))
+    c, c_G = math.sqrt(E_plane / RHO), math.sqrt(G / RHO)
+    omega_1 = (1.875 / 0.079) ** 2 * math.sqrt(E_plane * THICKNESS ** 2 / (12.0 * RHO))
+    bending = 0.5 * RHO * c * 1.3e-3 * omega_1 / (2.0 * E_plane)
+    cut_off = []
+    for dx in (0.002, 0.001, 0.0005):
+        eta_s = 0.25 * RHO * c_G * min(THICKNESS, 1.3 * dx)
+        stiffness_inertia = SHEAR_CORRECTION * G * THICKNESS * RHO * THICKNESS ** 3 / 12.0
+        cut_off.append(SHEAR_CORRECTION * THICKNESS * eta_s / (2.0 * math.sqrt(stiffness_inertia)))
+    return ("Damping ratios of the shell's damping by its rule: the first bending mode "
+            f"{bending:.1e} (at h = 1.3 mm); the shear-rotation cut-off "
+            + " / ".join(f"{z:.2f}" for z in cut_off)
+            + " at the mid-line spacings 2 / 1 / 0.5 mm (h = 1.3 dx); the axial and rotation "
+            f"zigzags h / (2 ds) = {1.3 / 2:.2f}.")
+
+
 def stepping(out):
     """The coupler's last sub-stepping line, up to its reason."""
     with open(os.path.join(out, "launcher.log")) as lines:
@@ -78,7 +99,7 @@ def main():
                    "Written by `scripts/shell_window_vibration.py`. The coupled elastic plate with "
                    "the shell (plate 1 mm, water 2 mm) to t = 0.1 s; omega_r = "
                    f"{omega_r:.0f} rad/s, the section's shear-rotation cut-off. The synchronised "
-                   "rows show the speeds of the plate's own swing.")
+                   "rows show the speeds of the plate's own swing. " + damping_ratios())
 
 
 if __name__ == "__main__":

@@ -14,9 +14,9 @@
 // rate gamma' = 2 x the tensor's component and the shear correction k:
 //   N_d = eta_n t eps',  M_d = eta_n t^3 / 12 kappa',  Q_d = k eta_s t gamma',
 //   eta_n = 0.5 rho c h,  eta_s = 0.25 rho c_G min(t, h).
-// Damping ratios (docs/shell.md, "Damping"): the first bending mode of the
-// Antoci plate 3e-4; the shear-rotation cut-off omega_r about 0.1 at
-// h = 1.3 mm; the axial and rotation zigzags (omega = 2 c / ds) h / (2 ds).
+// Its damping ratios for the elastic plate (first bending mode, the
+// shear-rotation cut-off, the zigzags h / (2 ds)) are computed by
+// scripts/shell_window_vibration.py.
 #pragma once
 
 #include <algorithm>
