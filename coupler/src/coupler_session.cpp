@@ -17,6 +17,7 @@
 #include "sphcore/region.hpp"
 #include "sphcore/run_control.hpp"
 #include "sphcore/timeseries_writer.hpp"
+#include "substep_choice.hpp"
 #include "zap_handler.hpp"
 
 namespace cosph::coupler {
@@ -230,7 +231,9 @@ class Session {
       peer.particle_count = hello.particle_count();
       peer.max_h = hello.max_smoothing_length();
       peer.bounds = cp::from_proto(hello.bounds());
+      if (side == kSolid) solid_undamped_modes_ = hello.undamped_modes();
     }
+    take_the_solids_damping_into_account();
     for (int side : {kFluid, kSolid}) {
       cp::Envelope welcome;
       welcome.mutable_welcome()->set_protocol_version(cp::kProtocolVersion);
@@ -239,6 +242,19 @@ class Session {
     }
     std::cout << "cosph-coupler: coupling '" << peers_[kFluid].solver << "' and '"
               << peers_[kSolid].solver << "' at " << settings_.endpoint << std::endl;
+  }
+
+  // A solid without dissipation for its fastest modes turns an automatic
+  // multi-rate choice into synchronised steps (substep_choice.hpp).
+  void take_the_solids_damping_into_account() {
+    if (settings_.solid_at_fluid_step) return;
+    const SubstepChoice choice = account_for_undamped_modes(
+        {settings_.max_substeps, settings_.added_mass_ratio, settings_.stepping_reason},
+        solid_undamped_modes_, peers_[kSolid].solver);
+    if (choice.max_substeps == settings_.max_substeps) return;
+    settings_.max_substeps = choice.max_substeps;
+    settings_.stepping_reason = choice.reason;
+    std::cout << "cosph-coupler: sub-stepping: " << choice.reason << std::endl;
   }
 
   // Empty if the Hello may join the run as `side`, else the reason.
@@ -549,6 +565,7 @@ class Session {
   }
 
   CouplerSettings settings_;
+  bool solid_undamped_modes_ = false;  // the solid's Hello: see account_for_undamped_modes
   std::chrono::milliseconds timeout_;
   cp::BoundIpcFile ipc_file_;  // before the context: destroyed after it
   zmq::context_t context_{1};

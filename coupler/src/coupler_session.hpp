@@ -20,6 +20,10 @@ struct CouplerSettings {
   CrossPhaseParameters cross_phase;
   int max_substeps = 1;         // 1: synchronised steps; more: multi-rate (common_step.hpp)
   std::string stepping_reason;  // for the run's log: which stepping and why
+  // mu_W when the stepping was chosen automatically (substep_choice.hpp), else
+  // -1: the solid's Hello can still make an automatic multi-rate choice
+  // synchronised (account_for_undamped_modes).
+  double added_mass_ratio = -1.0;
   // coupling.solid_step = "fluid": the fluid's step, taken whole by the solid
   // too (a stability test that must end in an error).
   bool solid_at_fluid_step = false;

@@ -77,6 +77,7 @@ CouplerSettings read_coupler_settings(const sph::CaseFile& case_file) {
   const SubstepChoice substeps = read_substep_choice(case_file);
   settings.max_substeps = substeps.max_substeps;
   settings.stepping_reason = substeps.reason;
+  settings.added_mass_ratio = substeps.added_mass_ratio;
   sph::require(coupling.solid_step().empty() || coupling.solid_step() == "own" ||
                    coupling.solid_step() == "fluid",
                case_file, "coupling.solid_step",

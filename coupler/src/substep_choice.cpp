@@ -76,15 +76,6 @@ SubstepChoice read_substep_choice(const sph::CaseFile& case_file) {
   try {
     const auto fluid = cosph::fluid::read_fluid_parameters(case_file);
     const auto solid = cosph::solid::read_solid_parameters(case_file);
-    // The added-mass bound assumes the solid damps what a held force excites
-    // between windows (both continuum solids carry artificial viscosity). The
-    // shell has no dissipation of its own: held forces pump its
-    // shear-rotation modes (docs/shell.md, "Coupled"), so it steps with the
-    // water.
-    if (solid.model == cosph::solid::SolidModel::shell)
-      return {1, -1.0,
-              "synchronised (automatic: the shell solid has no dissipation of its own, and "
-              "multi-rate windows pump its shear-rotation modes; docs/shell.md)"};
     return choose_substeps(
         {fluid.run.cfl, fluid.rho0, fluid.c0, fluid.h, solid.rho0, solid.c0, solid.h, thickness});
   } catch (const sph::ConfigError& error) {
@@ -94,6 +85,17 @@ SubstepChoice read_substep_choice(const sph::CaseFile& case_file) {
             std::string("synchronised (automatic: the added-mass ratio is unknown, ") +
                 error.what() + ")"};
   }
+}
+
+SubstepChoice account_for_undamped_modes(const SubstepChoice& choice, bool undamped_modes,
+                                         const std::string& solid_name) {
+  const bool automatic_multi_rate = choice.added_mass_ratio >= 0.0 && choice.max_substeps > 1;
+  if (!undamped_modes || !automatic_multi_rate) return choice;
+  return {1, choice.added_mass_ratio,
+          "synchronised (automatic: the solid '" + solid_name +
+              "' reports modes it does not damp, which the held forces of multi-rate windows "
+              "pump; docs/auto_substeps.md. The added-mass ratio alone would allow multi-rate: " +
+              choice.reason + ")"};
 }
 
 }  // namespace cosph::coupler

@@ -61,6 +61,18 @@ SubstepChoice choose_substeps(const AddedMassInputs& in);
 // Throws sph::ConfigError for a negative value.
 SubstepChoice read_substep_choice(const sph::CaseFile& case_file);
 
+// The solid's Hello says whether it has modes it does not damp (Hello field
+// undamped_modes). A held force lags the motion it answers by about half a
+// window, W/2: for a mode of angular frequency omega that is a phase lag
+// omega W / 2 and a negative damping ratio of the order of the coupling
+// stiffness's share times omega W / 4, which only the solid's own dissipation
+// can outweigh. Without any, a multi-rate window of any length lets the mode
+// grow (measured for the shell: docs/shell.md, "Coupled"), so an automatic
+// multi-rate choice becomes synchronised; an explicit max_substeps and a
+// choice that is synchronised already are returned unchanged.
+SubstepChoice account_for_undamped_modes(const SubstepChoice& choice, bool undamped_modes,
+                                         const std::string& solid_name);
+
 // The thinnest of the case's solid.body regions, in m (0 without any): the
 // plate's thickness e, the lightest mass per unit of interface. A region's
 // thickness is the diameter of the largest circle inside it (sph::thickness),

@@ -73,7 +73,8 @@ Participant::~Participant() = default;
 
 sph::Region Participant::connect(PhaseKind phase, const std::string& solver_name,
                                  std::size_t particle_count, double max_smoothing_length,
-                                 const sph::Region& bounds, long resumed_step) {
+                                 const sph::Region& bounds, long resumed_step,
+                                 bool undamped_modes) {
   Envelope hello;
   Hello& h = *hello.mutable_hello();
   h.set_protocol_version(kProtocolVersion);
@@ -84,6 +85,7 @@ sph::Region Participant::connect(PhaseKind phase, const std::string& solver_name
   *h.mutable_bounds() = to_proto(bounds);
   h.set_resumed(resumed_step >= 0);
   h.set_resumed_step(static_cast<std::uint64_t>(std::max(resumed_step, 0L)));
+  h.set_undamped_modes(undamped_modes);
   send(impl_->socket, hello);
   const Envelope welcome = impl_->await("its Welcome");
   if (!welcome.has_welcome())

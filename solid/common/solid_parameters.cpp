@@ -124,6 +124,9 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
   p.clamps = checked_regions(solid.clamp(), case_file, "solid.clamp", least_side);
   require(!solid.has_end_load() || p.model == SolidModel::shell, case_file, "solid.end_load",
           "applies to solid.model 'shell' only");
+  require(!solid.has_shell_damping() || p.model == SolidModel::shell, case_file,
+          "solid.shell_damping", "applies to solid.model 'shell' only");
+  p.shell_damping = !solid.has_shell_damping() || solid.shell_damping();
 
   p.artificial_stress = read_artificial_stress(case_file);
   p.fracture = read_fracture(case_file, p.dx, p.nu);

@@ -91,6 +91,7 @@ struct SolidParameters {
   std::vector<sph::Shape> clamps;  // solid.clamp
   std::vector<SolidWall> walls;    // solid.walls grown by dx/2 (wall_contact.hpp)
   double hourglass_alpha;          // total_lagrangian: hourglass control (Ganzenmueller 2015)
+  bool shell_damping = true;       // shell: Kelvin-Voigt damping of its strain rates
   // The water's walls when the case lists no solid.walls (unmet_walls.hpp).
   std::vector<UnmetWall> unmet_walls;
 };

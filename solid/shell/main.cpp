@@ -34,7 +34,8 @@ int main(int argc, char** argv) {
               notes.push_back("solid.velocity_gradient is not used by the shell");
             if (solid.artificial_viscosity() > 0.0 || solid.artificial_viscosity_quadratic() > 0.0)
               notes.push_back(
-                  "solid.artificial_viscosity is not used: the shell has no viscosity of its own");
+                  "solid.artificial_viscosity is not used: the shell damps by its own rule "
+                  "(solid.shell_damping, docs/shell.md)");
             if (!solid.walls().empty()) notes.push_back("solid.walls are not met by the shell");
             if (solid.has_hourglass_control())
               notes.push_back(

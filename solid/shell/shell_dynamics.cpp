@@ -7,6 +7,38 @@
 
 namespace cosph::solid::shell {
 
+namespace {
+
+// The viscous resultants at stress point k from the strain rates, the time
+// derivatives of reissner_beam.hpp's strains with t' = omega d, d' = -omega t:
+//   eps' = v'.t + omega x'.d,  gamma' = v'.d - omega x'.t,  kappa' = omega',
+// with v' = (v_j - v_i) / ds, omega = (omega_i + omega_j) / 2 and
+// omega' = (omega_j - omega_i) / ds, as the strains are taken. They enter n
+// and x' x n as the elastic ones do: their power is dissipated, never gained.
+void add_damping(const ShellParticles& P, std::size_t k, double phi,
+                 const ShellForceParameters& parameters, BeamResultants& r) {
+  const ShellStressPoints& s = P.stress;
+  const std::size_t i = static_cast<std::size_t>(s.i[k]), j = i + 1;
+  const DirectorFrame frame = DirectorFrame::at(phi);
+  const Vec2 dv_dS = (P.v[j] - P.v[i]) / s.ds[k];
+  const double omega = 0.5 * (P.omega[i] + P.omega[j]);
+  const double eps_rate = dv_dS.dot(frame.t) + omega * s.dx_dS[k].dot(frame.d);
+  const double gamma_rate = dv_dS.dot(frame.d) - omega * s.dx_dS[k].dot(frame.t);
+  const double kappa_rate = (P.omega[j] - P.omega[i]) / s.ds[k];
+  const ShellSection& section = parameters.section;
+  const double t = section.thickness;
+  const double N_d = parameters.damping.eta_normal * t * eps_rate;
+  const double Q_d = kShearCorrection * parameters.damping.eta_shear * t * gamma_rate;
+  const double M_d = parameters.damping.eta_normal * t * t * t / 12.0 * kappa_rate;
+  r.N += N_d;
+  r.Q += Q_d;
+  r.M += M_d;
+  r.n += N_d * frame.t + Q_d * frame.d;
+  r.couple = cross(s.dx_dS[k], r.n);
+}
+
+}  // namespace
+
 void compute_strains(ShellParticles& P, const ShellForceParameters& parameters) {
   ShellStressPoints& s = P.stress;
   for (std::size_t k = 0; k < s.size(); ++k) {
@@ -14,7 +46,8 @@ void compute_strains(ShellParticles& P, const ShellForceParameters& parameters) 
     s.dx_dS[k] = (P.x[j] - P.x[i]) / s.ds[k];
     s.kappa[k] = (P.theta[j] - P.theta[i]) / s.ds[k];
     const double phi = parameters.phi0 + 0.5 * (P.theta[i] + P.theta[j]);
-    const BeamResultants r = beam_resultants(s.dx_dS[k], phi, s.kappa[k], parameters.section);
+    BeamResultants r = beam_resultants(s.dx_dS[k], phi, s.kappa[k], parameters.section);
+    if (parameters.damping.any()) add_damping(P, k, phi, parameters, r);
     s.N[k] = r.N;
     s.Q[k] = r.Q;
     s.M[k] = r.M;

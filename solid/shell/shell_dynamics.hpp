@@ -23,6 +23,7 @@
 // the scheme has no other.
 #pragma once
 
+#include "shell_damping.hpp"
 #include "shell_particles.hpp"
 #include "shell_section.hpp"
 
@@ -30,11 +31,14 @@ namespace cosph::solid::shell {
 
 struct ShellForceParameters {
   ShellSection section;
-  double phi0;  // reference angle of the line's tangent
+  double phi0;           // reference angle of the line's tangent
+  ShellDamping damping;  // none: all zero
 };
 
 // x', kappa, N, Q, M and the strain energy at every stress point, and each
-// particle's N, Q, M (the mean of its stress points').
+// particle's N, Q, M (the mean of its stress points'). N, Q, M carry the
+// damping's viscous part (shell_damping.hpp), from the rates of the
+// particles' current v and omega; the strain energy is the elastic part.
 void compute_strains(ShellParticles& P, const ShellForceParameters& parameters);
 
 // a and alpha from the strains (compute_strains first); zero for clamped.

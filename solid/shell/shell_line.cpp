@@ -26,17 +26,13 @@ ShellLine read_shell_line(const sph::CaseFile& case_file, double dx) {
   const bool along_x = width >= height;
   const double length = along_x ? width : height, thickness = along_x ? height : width;
   sph::require(thickness > 0.0, case_file, "solid.body[0]", "must have max > min");
-  sph::require(
-      thickness <= kMostSpacingsAcross * dx && thickness * kLeastSlenderness <= length, case_file,
-      "solid.body[0]",
-      "a box " + sph::format_number(width) + " x " + sph::format_number(height) +
-          " m is not a thin plate: the shell model reads the box as a plate of thickness its "
-          "short side, which must be at most " +
-          sph::format_number(kMostSpacingsAcross) + " spacings (" +
-          sph::format_number(kMostSpacingsAcross * dx) + " m) and at most 1/" +
-          sph::format_number(kLeastSlenderness) +
-          " of its long side; use solid.model \"jaumann\" or \"total_lagrangian\" for a "
-          "thick body");
+  sph::require(thickness * kLeastSlenderness <= length, case_file, "solid.body[0]",
+               "a box " + sph::format_number(width) + " x " + sph::format_number(height) +
+                   " m is not a thin plate: the shell model reads the box as a plate of "
+                   "thickness its short side, which must be at most 1/" +
+                   sph::format_number(kLeastSlenderness) +
+                   " of its long side; use solid.model \"jaumann\" or \"total_lagrangian\" "
+                   "for a thick body");
   ShellLine line;
   line.tangent = along_x ? Vec2(1.0, 0.0) : Vec2(0.0, 1.0);
   line.start = along_x ? Vec2(box.min().x(), 0.5 * (box.min().y() + box.max().y()))

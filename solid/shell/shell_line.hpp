@@ -1,9 +1,12 @@
 // How a case's body box becomes a shell, and the shell's reference line.
 //
 // The thin-box rule: the shell model reads its one solid.body box as a plate
-// along the box's long side, of thickness t the short side, when
-//   t <= kMostSpacingsAcross dx   and   t <= length / kLeastSlenderness;
-// any other box is refused (a continuum model suits it). The mid-line
+// along the box's long side, of thickness t the short side, when it is
+// slender enough for a beam theory,
+//   t <= length / kLeastSlenderness;
+// any other box is refused (a continuum model suits it). The spacing dx is
+// the mid-line's, not tied to t: the thickness is a property of the section,
+// so a 5 mm plate may take 2, 1 or 0.5 mm along its line. The mid-line
 // particles sit on the box's centre line at spacing ds = length / n,
 // n = round(length / dx), from one end of the line to the other (n + 1 of
 // them: a particle on each end, standing for ds / 2 of line, the others for
@@ -24,7 +27,6 @@
 
 namespace cosph::solid::shell {
 
-inline constexpr double kMostSpacingsAcross = 6.0;
 inline constexpr double kLeastSlenderness = 4.0;
 
 struct ShellLine {

@@ -60,7 +60,10 @@ ShellSolver::ShellSolver(const sph::CaseFile& case_file, const SolidParameters& 
     : ParticleSolver(parameters,
                      build_shell(case_file, parameters, line, section_of(line, parameters))),
       line_(line),
-      forces_{section_of(line, parameters), line.phi0()},
+      forces_{section_of(line, parameters), line.phi0(),
+              parameters.shell_damping
+                  ? ShellDamping::of(section_of(line, parameters), parameters.h)
+                  : ShellDamping{}},
       end_load_(read_end_load(case_file, particles_)) {
   if (parameters_.tip_gauge)
     tip_ids_ = tip_gauge_ids(particles_.id, particles_.X, *parameters_.tip_gauge, line_.ds);
@@ -88,6 +91,7 @@ sph::StepLimits ShellSolver::step_limits() const {
   }
   sph::StepLimits limits = sph::step_limits(parameters_.run.cfl, parameters_.h,
                                             forces_.section.sound_speed(), v_max, a_max, 0.0);
+  limits.sound *= forces_.damping.step_factor(forces_.section, line_.ds);
   limits.sound = std::min(limits.sound, parameters_.run.cfl / forces_.section.rotation_frequency());
   return limits;
 }

@@ -63,6 +63,15 @@ class ShellSolver : public sph::ParticleSolver<ShellSolver, ShellParticles, Soli
   void set_interface_accelerations(const std::vector<Vec2>& accelerations);
   sph::Region interaction_bounds() const;
   std::vector<sph::Gauge> gauge_values() const;
+  // The water sees round(t / dx) layers across each mid-line particle
+  // (shell_interface.hpp): the most particles a state can carry.
+  std::size_t interface_particle_count() const {
+    return particles_.size() *
+           static_cast<std::size_t>(ShellInterface::layers(forces_.section, parameters_.dx));
+  }
+  // Without its damping (solid.shell_damping false) the shell dissipates
+  // nothing, and says so in its Hello (coupling.proto, undamped_modes).
+  bool undamped_modes() const { return !forces_.damping.any(); }
 
   // For tests: the state set directly (particles()), then update() for
   // strains and forces.

@@ -1,7 +1,10 @@
 """coupling.max_substeps 0 (every case's default): the coupler chooses
 multi-rate coupling for the elastic plate and synchronised steps for a plate
 20 times lighter than the water (coupler/src/substep_choice.hpp), says so on
-its first line, and then steps exactly as the explicit setting would."""
+its first line, and then steps exactly as the explicit setting would. A solid
+that reports undamped modes in its Hello (the shell without its damping) turns
+the multi-rate choice into synchronised steps, on a later line; the damped
+shell keeps multi-rate."""
 import os
 import re
 import shutil
@@ -31,6 +34,7 @@ class AutomaticChoice:
     """A default run against runs with the explicit settings it must equal
     (SAME) and must not (OTHER)."""
     SETTINGS, SAME, OTHER, CHOSEN, END_TIME = [], None, None, None, None
+    ALSO_SAYS = []
 
     @classmethod
     def setUpClass(cls):
@@ -45,10 +49,12 @@ class AutomaticChoice:
         self.assertAlmostEqual(self.auto / self.same, 1.0, delta=1e-3)
 
     def test_says_what_it_chose_and_why(self):
-        line = re.search(r"sub-stepping: (.*)", self.log)
-        self.assertIsNotNone(line, self.log)
-        self.assertTrue(line.group(1).startswith(self.CHOSEN), line.group(1))
-        self.assertIn("added-mass ratio of a window", line.group(1))
+        lines = re.findall(r"sub-stepping: (.*)", self.log)
+        self.assertTrue(lines, self.log)
+        self.assertTrue(lines[-1].startswith(self.CHOSEN), lines[-1])
+        self.assertIn("added-mass ratio of a window", lines[-1])
+        for word in self.ALSO_SAYS:
+            self.assertIn(word, lines[-1])
 
 
 class ElasticPlateTakesMultiRate(AutomaticChoice, unittest.TestCase):
@@ -60,6 +66,20 @@ class LightPlateTakesSynchronisedSteps(AutomaticChoice, unittest.TestCase):
     SETTINGS = ["solid.density=50"]   # rho_s / rho_f = 0.05: multi-rate breaks (stability map)
     SAME, OTHER, CHOSEN = "coupling.max_substeps=1", "coupling.max_substeps=32", "synchronised"
     END_TIME = 0.0003  # s: some 700 synchronised steps
+
+
+class UndampedShellTakesSynchronisedSteps(AutomaticChoice, unittest.TestCase):
+    # The added-mass ratio alone allows multi-rate; the solid's Hello says no.
+    SETTINGS = ["solid.model=shell", "solid.shell_damping=false"]
+    SAME, OTHER, CHOSEN = "coupling.max_substeps=1", "coupling.max_substeps=32", "synchronised"
+    ALSO_SAYS = ["does not damp", "multi-rate"]
+    END_TIME = 0.0005
+
+
+class DampedShellTakesMultiRate(AutomaticChoice, unittest.TestCase):
+    SETTINGS = ["solid.model=shell"]
+    SAME, OTHER, CHOSEN = "coupling.max_substeps=32", "coupling.max_substeps=1", "multi-rate"
+    END_TIME = 0.0005
 
 
 if __name__ == "__main__":

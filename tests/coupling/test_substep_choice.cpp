@@ -86,15 +86,31 @@ TEST(SubstepChoice, TheCaseIsAutomaticByDefault) {
   EXPECT_EQ(read_substep_choice(elastic_plate_case({"solid.density=50"})).max_substeps, 1);
 }
 
+// A solid that reports modes it does not damp (Hello field undamped_modes)
+// turns the automatic multi-rate choice into synchronised steps; the shell is
+// judged by that report, not by its name.
 TEST(SubstepChoice, TheShellStepsWithTheWater) {
-  const auto choice = read_substep_choice(elastic_plate_case({"solid.model=shell"}));
-  EXPECT_EQ(choice.max_substeps, 1);
-  EXPECT_NE(choice.reason.find("shell"), std::string::npos) << choice.reason;
+  using cosph::coupler::account_for_undamped_modes;
+  const auto automatic = read_substep_choice(elastic_plate_case({"solid.model=shell"}));
+  ASSERT_GT(automatic.max_substeps, 1) << automatic.reason;  // by the added-mass ratio
+  ASSERT_GE(automatic.added_mass_ratio, 0.0);
+  // A damped shell (the default), or a solid that does not send the field.
+  const auto damped = account_for_undamped_modes(automatic, false, "shell");
+  EXPECT_EQ(damped.max_substeps, automatic.max_substeps);
+  EXPECT_EQ(damped.reason, automatic.reason);
+  // Undamped: synchronised, and the log says why.
+  const auto undamped = account_for_undamped_modes(automatic, true, "shell");
+  EXPECT_EQ(undamped.max_substeps, 1);
+  EXPECT_NE(undamped.reason.find("does not damp"), std::string::npos) << undamped.reason;
+  EXPECT_NE(undamped.reason.find("'shell'"), std::string::npos) << undamped.reason;
   // Asked for, multi-rate still means what it says.
-  EXPECT_EQ(
-      read_substep_choice(elastic_plate_case({"solid.model=shell", "coupling.max_substeps=4"}))
-          .max_substeps,
-      4);
+  const auto asked =
+      read_substep_choice(elastic_plate_case({"solid.model=shell", "coupling.max_substeps=4"}));
+  EXPECT_EQ(account_for_undamped_modes(asked, true, "shell").max_substeps, 4);
+  // Synchronised already (a light plate): nothing to change.
+  const auto light = read_substep_choice(elastic_plate_case({"solid.density=50"}));
+  ASSERT_EQ(light.max_substeps, 1);
+  EXPECT_EQ(account_for_undamped_modes(light, true, "shell").reason, light.reason);
 }
 
 TEST(SubstepChoice, AnExplicitValueMeansWhatItSays) {

@@ -120,8 +120,9 @@ class CoupledRun {
     StepReply reply{};
     if (resuming) reply = resume();
     sph::Region region = participant_.connect(
-        settings_.phase, settings_.solver_description, solver_.particles().size(),
-        solver_.max_smoothing_length(), solver_.interaction_bounds(), resuming ? windows_ : -1);
+        settings_.phase, settings_.solver_description, announced_particle_count(solver_),
+        solver_.max_smoothing_length(), solver_.interaction_bounds(), resuming ? windows_ : -1,
+        has_undamped_modes(solver_));
     connected_ = true;
     sph::ProgressReporter progress(run_.end_time);
     if (!resuming) reply = exchange(region, solver_.time(), windows_);

@@ -49,4 +49,36 @@ concept SplitsItsStep = requires(Solver& solver, double dt) {
   solver.compute_forces();
 };
 
+// Optional: a solver that presents more interface particles than it has
+// particles (the shell: several layers across each mid-line particle) gives
+// the most it can send; the Hello announces it, and the coupler sizes the
+// states it accepts by it. Without the member: particles().size().
+template <class Solver>
+concept CountsInterfaceParticles = requires(const Solver& solver) {
+  { solver.interface_particle_count() } -> std::convertible_to<std::size_t>;
+};
+
+template <class Solver>
+std::size_t announced_particle_count(const Solver& solver) {
+  if constexpr (CountsInterfaceParticles<Solver>)
+    return solver.interface_particle_count();
+  else
+    return solver.particles().size();
+}
+
+// Optional: a solver that may carry no dissipation for its fastest modes
+// says so (Hello field undamped_modes); one without the member damps them.
+template <class Solver>
+concept ReportsUndampedModes = requires(const Solver& solver) {
+  { solver.undamped_modes() } -> std::convertible_to<bool>;
+};
+
+template <class Solver>
+bool has_undamped_modes(const Solver& solver) {
+  if constexpr (ReportsUndampedModes<Solver>)
+    return solver.undamped_modes();
+  else
+    return false;
+}
+
 }  // namespace cosph::coupling

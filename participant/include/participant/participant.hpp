@@ -42,10 +42,11 @@ class Participant {
 
   // The handshake. Returns the region to send particles from first.
   // resumed_step: the coupling step of the checkpoint the solver resumes
-  // from, or -1 for a run from the start.
+  // from, or -1 for a run from the start. undamped_modes: the solver has
+  // modes it does not damp (Hello field undamped_modes, coupling.proto).
   sph::Region connect(PhaseKind phase, const std::string& solver_name, std::size_t particle_count,
                       double max_smoothing_length, const sph::Region& bounds,
-                      long resumed_step = -1);
+                      long resumed_step = -1, bool undamped_modes = false);
 
   // One step's exchange, in two halves so that a solver can work between
   // them: its interface state out, then the coupler's answer for it in.
