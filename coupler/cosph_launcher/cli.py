@@ -12,7 +12,7 @@ from .errors import EXIT_BAD_INPUT, EXIT_FAILURE, EXIT_INTERRUPTED, EXIT_OK, Exi
 from .locate import (BUILD_HINT, available_cases, bin_dir, check_sets, find_exe, repo_dir,
                      resolve_case)
 from .output_dir import clear_earlier_output, lock_out_dir, prepare_out_dir
-from .plan import check_endpoint, child_commands, core_placement, pinning_pays, run_plan
+from .plan import check_endpoint, child_commands, core_placement, run_plan
 from .resume import (check_resume_sets, discard_later_checkpoints, last_complete_checkpoint,
                      recorded_run)
 from .security import check_bind, default_endpoint, make_private_dir, with_key_args
@@ -75,14 +75,9 @@ def build_parser(repo):
                      help="let the coupler listen on a wildcard address such as "
                           "tcp://0.0.0.0:PORT (every network interface)")
     run.add_argument("--quiet", action="store_true", help="show no progress")
-    pin = run.add_mutually_exclusive_group()
-    pin.add_argument("--no-pin", action="store_true",
+    run.add_argument("--no-pin", action="store_true",
                      help="in a multi-rate run, let the scheduler place the solvers "
                           "instead of giving each cores of its own")
-    pin.add_argument("--pin", action="store_true",
-                     help="in a multi-rate run, give each solver cores of its own even when "
-                          "other processes keep the cores busy (by default, only when the "
-                          "cores are free)")
     add_plot_parser(sub)
     resume = sub.add_parser(
         "resume", help="continue a stopped run from its last checkpoint",
@@ -171,7 +166,7 @@ def cmd_resume(args, repo, signals, run_parser):
             record.write("# resumed:\n" + "\n".join(shlex.join(c) for c in commands) + "\n")
     except OSError as err:
         raise UsageError(f"cannot record the resume in {out / 'command.txt'}: {err}") from err
-    args.no_pin = args.pin = False
+    args.no_pin = False
     return start_and_supervise(
         args, out, names, commands, separate_cores, signals, lock,
         on_cores=lambda placement: len(names) > 1 and make_private_dir(out, folder, endpoint,
@@ -212,10 +207,6 @@ def start_and_supervise(args, out, names, commands, separate_cores, signals, loc
     Each child is handed `lock`, the output folder's."""
     allowed = os.sched_getaffinity(0)
     placement = {} if args.no_pin else core_placement(names, separate_cores, allowed)
-    if placement and not args.pin and not pinning_pays(allowed):
-        placement = {}
-        emit(sys.stderr, "cosph: multi-rate run: other processes keep the cores busy, so the "
-                         "scheduler places the solvers (--pin: cores of their own anyway)\n")
     on_cores(placement)
 
     mode = "quiet" if args.quiet else ("tty" if sys.stderr.isatty() else "plain")

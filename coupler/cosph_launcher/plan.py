@@ -1,12 +1,10 @@
 """Planning a run: which processes a case needs (cosph-case plan), their
 command lines, and where they may run."""
 
-import math
 import os
 import re
 import subprocess
 import sys
-import time
 
 from .console import emit
 from .errors import EXIT_FAILURE, Exit, UsageError
@@ -57,9 +55,13 @@ def core_placement(names, separate_cores, allowed):
     In a multi-rate run the solid works through its sub-steps while the water
     waits, every window. Left to the scheduler, the solid's wait per window
     had a long tail, likely a process woken on the core it was working on;
-    each solver on cores of its own, the multi-rate elastic plate ran faster. A synchronised run, where each side waits for the other
-    at every step, ran slower so, and is left to the scheduler (README,
-    "Speed", and the commit that added this give the numbers).
+    each solver on cores of its own, the multi-rate elastic plate ran faster.
+    Beside an outside CPU-bound job it ran faster pinned too (0.84 of quiet
+    one-thread speed against 0.73 left to the scheduler, which can stack both
+    solvers on one core while the job holds the other; pinned, the job shares
+    a core with one solver only). A synchronised run, where each side waits
+    for the other at every step, ran slower so, and is left to the scheduler
+    (README, "Speed", and the commits give the numbers).
     The water gets the first half of the allowed cores (the larger, if odd),
     the solid the rest; the coupler, mostly waiting, may run anywhere."""
     cores = sorted(allowed)
@@ -67,46 +69,6 @@ def core_placement(names, separate_cores, allowed):
         return {}
     half = (len(cores) + 1) // 2
     return {names[1]: cores[:half], names[2]: cores[half:]}
-
-
-# A core counts as free while other processes use less than this share of it
-# (the solvers' rule for their thread count, sph::kBusyCoreShare).
-BUSY_CORE_SHARE = 0.25
-FREE_CORES_SAMPLE_S = 0.2
-
-
-def machine_busy_s():
-    """The CPU seconds every core of the machine has spent busy (the first line
-    of /proc/stat: user, nice, system, irq, softirq and steal; guest time is in
-    user already), or None without /proc/stat."""
-    try:
-        with open("/proc/stat") as stat:
-            fields = stat.readline().split()
-        user, nice, system, _idle, _iowait, irq, softirq, steal = map(int, fields[1:9])
-    except (OSError, ValueError):
-        return None
-    return (user + nice + system + irq + softirq + steal) / os.sysconf("SC_CLK_TCK")
-
-
-def cores_are_free(busy_s, seconds, machine_cores, wanted):
-    """Whether other processes, busy for busy_s CPU seconds over `seconds` of
-    wall time, left `wanted` of the machine's cores free."""
-    left = machine_cores - busy_s / seconds
-    return math.floor(left + BUSY_CORE_SHARE) >= wanted
-
-
-def pinning_pays(cores):
-    """Pinning each solver to cores of its own pays only on cores that are free:
-    an outside job then shares a core with one pinned solver, which the
-    scheduler can no longer move away from it. Decided from the machine's busy
-    time over FREE_CORES_SAMPLE_S, while the launcher itself sleeps."""
-    before = machine_busy_s()
-    if before is None:
-        return True
-    time.sleep(FREE_CORES_SAMPLE_S)
-    after = machine_busy_s()
-    return cores_are_free(after - before, FREE_CORES_SAMPLE_S, os.cpu_count() or len(cores),
-                          len(cores))
 
 
 def check_endpoint(endpoint):

@@ -24,8 +24,6 @@ from pathlib import Path
 
 HERE = Path(__file__).resolve().parent
 SCRIPT = HERE.parent.parent / "coupler" / "cosph"
-sys.path.insert(0, str(SCRIPT.parent))
-from cosph_launcher import plan as launcher_plan  # noqa: E402
 FAKE_BIN = HERE / "fake_bin"
 THREE = "cosph-coupler cosph-fluid cosph-solid-jaumann"
 ALL = "cosph-coupler,cosph-fluid,cosph-solid-jaumann"
@@ -219,8 +217,7 @@ class LauncherTest(unittest.TestCase):
     @unittest.skipIf(len(os.sched_getaffinity(0)) < 2, "needs two cores")
     def test_multi_rate_run_gives_each_solver_cores_of_its_own(self):
         allowed = sorted(os.sched_getaffinity(0))
-        # --pin: whether the cores are free (the default's condition) is tested below.
-        rc, _, err = self.run_case("--overwrite", "--pin", FAKE_PLAN=THREE + " separate-cores",
+        rc, _, err = self.run_case("--overwrite", FAKE_PLAN=THREE + " separate-cores",
                                    FAKE_STEPS="2")
         self.assertEqual(rc, 0, err)
         fluid, solid = self.fake_cores("cosph-fluid"), self.fake_cores("cosph-solid-jaumann")
@@ -519,34 +516,6 @@ class LauncherTest(unittest.TestCase):
                 os.killpg(proc.pid, signal.SIGKILL)
                 proc.communicate()
         self.assert_all_gone(3)
-
-
-class PinningDecisionTest(unittest.TestCase):
-    """A multi-rate run pins its solvers only while other processes leave the
-    cores free: with an outside job on one of two cores, a pinned solver shares
-    that core and the scheduler cannot move it away."""
-
-    def setUp(self):
-        self.launcher = launcher_plan
-
-    def test_pins_on_a_quiet_machine_only(self):
-        free = self.launcher.cores_are_free
-        # busy_s CPU seconds of other processes over 0.2 s, on two cores, both wanted.
-        self.assertTrue(free(0.0, 0.2, 2, 2))
-        self.assertTrue(free(0.04, 0.2, 2, 2))       # a fifth of a core
-        self.assertFalse(free(0.06, 0.2, 2, 2))      # over a quarter
-        self.assertFalse(free(0.2, 0.2, 2, 2))       # one outside busy loop
-        self.assertTrue(free(0.2, 0.2, 4, 2))        # ... on four cores, two are free
-        self.assertFalse(free(0.5, 0.2, 4, 2))
-
-    def test_machine_busy_time_counts_up(self):
-        before = self.launcher.machine_busy_s()
-        if before is None:
-            self.skipTest("no /proc/stat")
-        deadline = time.process_time() + 0.05
-        while time.process_time() < deadline:   # this process counts as busy too
-            pass
-        self.assertGreater(self.launcher.machine_busy_s(), before)
 
 
 if __name__ == "__main__":
