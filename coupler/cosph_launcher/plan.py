@@ -56,10 +56,10 @@ def core_placement(names, separate_cores, allowed):
     waits, every window. Left to the scheduler, the solid's wait per window
     had a long tail, likely a process woken on the core it was working on;
     each solver on cores of its own, the multi-rate elastic plate ran faster.
-    Beside an outside CPU-bound job it ran faster pinned too (0.84 of quiet
-    one-thread speed against 0.73 left to the scheduler, which can stack both
-    solvers on one core while the job holds the other; pinned, the job shares
-    a core with one solver only). A synchronised run, where each side waits
+    Beside an outside CPU-bound job pinning was never slower (docs/coupling.md
+    gives the runs): the scheduler can stack both solvers on one core while
+    the job holds the other; pinned, the job shares a core with one solver
+    only. A synchronised run, where each side waits
     for the other at every step, ran slower so, and is left to the scheduler
     (README, "Speed", and the commits give the numbers).
     The water gets the first half of the allowed cores (the larger, if odd),
