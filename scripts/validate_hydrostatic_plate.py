@@ -40,6 +40,10 @@ import hydrostatic_plate as hp
 SHELL, JAUMANN = "shell", "jaumann"
 RUNS = [("shell, coarse", "shell_coarse", SHELL, 0.04, 0.03125, []),
         ("shell, the case", "shell_default", SHELL, 0.02, 0.015625, []),
+        # What the case set before the shell had its damping: the same run in
+        # windows of at most 8 shell steps.
+        ("shell, the case, max_substeps 8", "shell_default_w8", SHELL, 0.02, 0.015625,
+         ["coupling.max_substeps=8"]),
         ("shell, coarse water", "shell_coarse_water", SHELL, 0.04, 0.015625, []),
         ("shell, coarse plate", "shell_coarse_plate", SHELL, 0.02, 0.03125, []),
         ("shell, fine water", "shell_fine_water", SHELL, 0.01, 0.015625, []),

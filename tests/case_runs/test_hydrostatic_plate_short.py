@@ -27,8 +27,11 @@ class HydrostaticPlateShort(case_runs.CaseRunTest):
     SETTINGS = [f"run.end_time={END_TIME}", f"run.snapshot_interval={END_TIME}"]
 
     def test_the_case_runs_the_shell_multi_rate(self):
+        # The damped shell reports no undamped modes, so the added-mass ratio
+        # alone decides: a window of this heavy plate is far from mu_W = 1.
         self.assertIn("cosph-solid-shell", self.log)
-        self.assertIn("at most 8 sub-steps a window", self.log)
+        self.assertIn("sub-stepping: multi-rate, at most 32 sub-steps a window (automatic",
+                      self.log)
 
     def test_the_water_weighs_on_the_plate_at_rest(self):
         # At t = 0 both are at rest and the water in hydrostatic balance: the
