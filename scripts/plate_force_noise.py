@@ -34,12 +34,12 @@ def main():
     for key, label, settings in OPTIONS:
         out = os.path.join(args.out, key)
         os.makedirs(out, exist_ok=True)
-        wall = None
-        if not (args.reuse and os.path.exists(os.path.join(out, "coupling.csv"))):
-            wall = cr.run_case("elastic_plate", out, settings)
+        reuse = args.reuse and os.path.exists(os.path.join(out, "coupling.csv"))
+        wall, failure = cr.run_or_reuse("elastic_plate", out, settings, reuse)
+        if failure:
+            print(f"{label}: {failure}", flush=True)
         (ex, ey), reached = ia.tip_errors(out)
         mean, noise = ia.force_noise(out)
-        wall = wall or cr.logged_wall_time(out)
         rows.append([label, f"{1e3 * ex:.1f}", f"{1e3 * ey:.1f}", f"{reached:.3f}",
                      f"{mean:.2f}", f"{noise:.3f}", f"{wall:.0f} s" if wall else "-"])
         print(rows[-1], flush=True)
