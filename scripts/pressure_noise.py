@@ -15,7 +15,14 @@ H, 8 mm):
     the thread (--cpu), the options taken in turn, REPEATS times over, median.
 Writes docs/results/pressure_noise.md and docs/figures/pressure_noise.png.
 
+With --convergence instead: the far-wall sensor's mean and noise, the far
+wall's force and the front's error for the quiet options at 4, 2 and (the
+default and the quietest option) 1.5 mm, the runs ending just after the
+window: whether the default's mean, the issue's reference, is converged.
+Writes docs/results/sensor_convergence.md.
+
 usage: /usr/bin/python3 scripts/pressure_noise.py [--out DIR] [--reuse] [--repeats N]
+       /usr/bin/python3 scripts/pressure_noise.py --convergence [--out DIR] [--reuse]
 """
 import argparse
 import os
@@ -56,6 +63,12 @@ OPTIONS = [  # (key, label, settings)
 ]
 SPACINGS = [0.008, 0.004]
 BENCH_STEPS = 400
+# The convergence check: (key of OPTIONS, spacings). The finest spacing for the
+# default and the quietest option only: a 1.5 mm run takes ~20 min of the
+# shared machine.
+CONVERGENCE = [("delta_sph", [0.004, 0.002, 0.0015]), ("riemann", [0.004, 0.002]),
+               ("riemann_wendland", [0.004, 0.002]), ("wendland_2dx", [0.004, 0.002]),
+               ("riemann_wendland_2dx", [0.004, 0.002, 0.0015])]
 
 
 def run(out, settings, reuse):
@@ -82,20 +95,22 @@ def front_error(series, experiment):
 
 
 def bench_ms_per_step(settings, spacing):
-    """ms per step of the fluid alone, one thread, the thread's CPU time."""
+    """(ms per step of the fluid alone, one thread, the thread's CPU time;
+    the pairs a step visits at the end)."""
     command = [os.path.join(cr.REPO, "build", "bin", "cosph-bench"), "--fluid", "--cpu",
                "--threads", "1", "--spacing", str(spacing), "--steps", str(BENCH_STEPS)]
     for setting in settings:
         command += ["--set", setting]
     output = subprocess.run(command, check=True, stdout=subprocess.PIPE, text=True).stdout
     row = [line for line in output.splitlines() if line.startswith("fluid")][0]
-    return float(row.split()[3])
+    return float(row.split()[3]), int(row.split()[5])
 
 
 def costs(repeats, spacing):
     """{key: (median ms per step, median of its ratios to the default's, lowest
-    ratio, highest)}: each option timed in REPEATS pairs with the default, the
-    two alternating, so that the shared machine's load falls on both alike."""
+    ratio, highest, pairs a step visits)}: each option timed in REPEATS pairs
+    with the default, the two alternating, so that the shared machine's load
+    falls on both alike."""
     default = []
     result = {}
     for key, _, settings in OPTIONS:
@@ -105,10 +120,11 @@ def costs(repeats, spacing):
         for _ in range(repeats):
             default.append(bench_ms_per_step([], spacing))
             times.append(bench_ms_per_step(settings, spacing))
-            ratios.append(times[-1] / default[-1])
-        result[key] = (float(np.median(times)), float(np.median(ratios)), min(ratios),
-                       max(ratios))
-    result["delta_sph"] = (float(np.median(default)), 1.0, 1.0, 1.0)
+            ratios.append(times[-1][0] / default[-1][0])
+        result[key] = (float(np.median([ms for ms, _ in times])), float(np.median(ratios)),
+                       min(ratios), max(ratios), times[-1][1])
+    result["delta_sph"] = (float(np.median([ms for ms, _ in default])), 1.0, 1.0, 1.0,
+                           default[-1][1])
     return result
 
 
@@ -144,6 +160,42 @@ def draw(rows, cost, path):
     fig.savefig(path, dpi=110)
 
 
+def convergence(args, experiment):
+    """The sensor's and the wall force's means against the spacing for the
+    quiet options: whether the default's mean at 4 mm, the issue's
+    reference, is converged, and where the options' means go."""
+    labels = {key: (label, settings) for key, label, settings in OPTIONS}
+    end = dam.AFTER_IMPACT[1] + 0.01
+    runs = [(key, dx) for key, spacings in CONVERGENCE for dx in spacings]
+    results = {}
+    for key, dx in sorted(runs, key=lambda run: -run[1]):  # the cheap runs first
+        folder = os.path.join(args.out, "convergence", f"{key}_dx_{dx:g}")
+        os.makedirs(folder, exist_ok=True)
+        series_path = os.path.join(folder, "timeseries.csv")
+        if not (args.reuse and os.path.exists(series_path)):
+            wall = cr.run_case("dam_break", folder, labels[key][1] + [
+                f"fluid.spacing={dx}", f"run.output_interval={dam.OUTPUT_INTERVAL}",
+                "run.snapshot_interval=1", f"run.end_time={end}"], timeout=4 * 3600)
+            print(key, dx, f"{wall:.0f} s wall", flush=True)
+        series = cr.read_csv(series_path)
+        results[(key, dx)] = [f"{value:.3f}" for value in (
+            *dam.sensor_noise(series, "probe1"), far_wall_force_noise(series)[0])] + [
+            f"{100 * front_error(series, experiment):.1f} %"]
+        print(key, dx, results[(key, dx)], flush=True)
+    rows = [[labels[key][0], f"{dx * 1e3:g}", *results[(key, dx)]] for key, dx in runs]
+    path = cr.write_table(
+        "sensor_convergence",
+        ["option", "spacing (mm)", "far-wall sensor: mean", "noise", "far-wall force: mean",
+         "front: RMS rel. error"],
+        rows,
+        preamble="The far-wall sensor's mean and noise after the impact (t = "
+                 f"{dam.AFTER_IMPACT[0]:g}-{dam.AFTER_IMPACT[1]:g} s, over rho0 g H), the far "
+                 "wall's force (over rho0 g H^2) and the front's RMS relative error against "
+                 "Martin & Moyce (T <= 3.1) against the spacing, the runs ending at "
+                 f"t = {end:g} s. Produced by `scripts/pressure_noise.py --convergence`.")
+    print(open(path).read())
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--out", default=os.path.join(cr.REPO, "out", "pressure_noise"))
@@ -151,9 +203,14 @@ def main():
                         help="read the runs already in --out; run only the missing ones")
     parser.add_argument("--repeats", type=int, default=5,
                         help="pairs (option, default) of the cost measurement per option")
+    parser.add_argument("--convergence", action="store_true",
+                        help="only the convergence check of the sensor's mean (CONVERGENCE)")
     args = parser.parse_args()
 
     experiment = cr.reference("martin_moyce_n2_front.csv")
+    if args.convergence:
+        convergence(args, experiment)
+        return
     rows = {}
     for key, label, settings in OPTIONS:
         for dx in SPACINGS:
@@ -179,8 +236,11 @@ def main():
     print("ms per step, its ratio to the default's (median, lowest, highest):", cost, flush=True)
 
     def per_step(key):
-        ms, ratio, lowest, highest = cost[key]
+        ms, ratio, lowest, highest, _ = cost[key]
         return f"{ms:.3f} ({ratio:.2f}; {lowest:.2f}-{highest:.2f})"
+
+    def pairs(key):
+        return f"{cost[key][4]} ({cost[key][4] / cost['delta_sph'][4]:.2f})"
 
     def per_simulated_second(key):
         """CPU seconds per simulated second at the finest spacing: the cost per
@@ -198,18 +258,19 @@ def main():
             if (key, dx) not in rows:
                 table.append([label, f"{dx * 1e3:g}", "not run: no quieter than the default at "
                               f"{SPACINGS[0] * 1e3:g} mm", "", "", "", "", "", "", "",
-                              per_step(key) if finest else "", ""])
+                              per_step(key) if finest else "", pairs(key) if finest else "",
+                              ""])
                 continue
             r = rows[(key, dx)]
             table.append([label, f"{dx * 1e3:g}", f"{r['far_wall'][0]:.3f}",
                           f"{r['far_wall'][1]:.3f}", f"{r['force'][0]:.3f}", f"{r['force'][1]:.3f}",
                           f"{r['floor'][0]:.3f}", f"{r['floor'][1]:.3f}",
                           f"{100 * r['front']:.1f} %", r["spray"],
-                          per_step(key) if finest else "",
+                          per_step(key) if finest else "", pairs(key) if finest else "",
                           per_simulated_second(key) if finest else ""])
         still = rows[(key, "still")]["floor"]
         table.append([label, "still tank, 8", "", "", "", "", f"{still[0]:.3f}", f"{still[1]:.3f}",
-                      "", "", "", ""])
+                      "", "", "", "", ""])
     figure = os.path.join(cr.FIGURES, "pressure_noise.png")
     draw(rows, cost, figure)
     path = cr.write_table(
@@ -218,6 +279,7 @@ def main():
          "noise", "floor sensor: mean", "noise",
          "front: RMS rel. error", "water left as spray",
          f"ms per step at {SPACINGS[-1] * 1e3:g} mm (/ default: median; range)",
+         "pairs a step visits (/ default)",
          "CPU s per simulated s (/ default)"],
         table,
         preamble="The dam break's pressure sensors after the impact (t = "
@@ -230,7 +292,8 @@ def main():
                  "(T <= 3.1); the fluid's cost per step alone (`cosph-bench --cpu`, one thread, "
                  f"{BENCH_STEPS} steps; each option in {args.repeats} pairs with the default, "
                  "the two alternating on the shared machine: median ms, and the median, lowest "
-                 "and highest of the pairs' ratios), and per simulated second (the cost per step "
+                 "and highest of the pairs' ratios; the neighbour pairs a step visits, which the "
+                 "cost follows), and per simulated second (the cost per step "
                  "times the steps the 4 mm run took: a larger h takes longer steps). "
                  "Produced by `scripts/pressure_noise.py`.")
     print(open(path).read())

@@ -21,10 +21,8 @@ the Wendland C2 kernel at h = 2 dx (delta-SPH, Riemann), with snapshots every
   - the far wall's force (wall2_force_x), as pressure_noise.py measures it;
 and, to see whether the wall friction of the artificial viscosity (alpha h c0,
 larger with h) slows that flow, the h = 2 dx run with alpha h held at the
-default's.
-And the sensor's and the force's means at 2 mm for the three options (the
-runs end at 0.56 s). Writes docs/results/sensor_support.md and
-docs/results/sensor_convergence.md.
+default's. (Whether the means converge with the spacing:
+pressure_noise.py --convergence.) Writes docs/results/sensor_support.md.
 
 usage: /usr/bin/python3 scripts/sensor_support.py [--out DIR] [--reuse]
 """
@@ -41,7 +39,6 @@ import pressure_noise as pn
 import validate_dam_break as dam
 
 SPACING = 0.004
-FINER = 0.002  # the spacing of the convergence check
 ALPHA = 0.02  # the case's fluid.artificial_viscosity
 PROBE = np.array([0.576, 0.016])  # probe1, cases/dam_break.pbtxt
 RUNS = [  # (key, label, settings)
@@ -164,35 +161,6 @@ def main():
                  f"floor to the far wall (x = {APPROACH[0][0]:g}-{APPROACH[0][1]:g} m, "
                  f"y < {1e3 * APPROACH[1]:g} mm); the far wall's force over rho0 g H^2. "
                  "Produced by `scripts/sensor_support.py`.")
-    print(open(path).read())
-    convergence(args)
-
-
-def convergence(args):
-    """The sensor's and the wall force's means at FINER too, for the runs that
-    are options (not the diagnosis): whether the spacing closes the gap."""
-    rows = []
-    for key, label, settings in RUNS[:3]:
-        folder = os.path.join(args.out, f"{key}_dx_{FINER:g}")
-        os.makedirs(folder, exist_ok=True)
-        if not (args.reuse and os.path.exists(os.path.join(folder, "timeseries.csv"))):
-            cr.run_case("dam_break", folder, settings + [
-                f"fluid.spacing={FINER}", f"run.output_interval={dam.OUTPUT_INTERVAL}",
-                "run.snapshot_interval=1", f"run.end_time={dam.AFTER_IMPACT[1] + 0.01}"])
-        for dx, run in ((SPACING, os.path.join(args.out, key)), (FINER, folder)):
-            series = cr.read_csv(os.path.join(run, "timeseries.csv"))
-            far_wall = dam.sensor_noise(series, "probe1")
-            rows.append([label, f"{dx * 1e3:g}", f"{far_wall[0]:.3f}", f"{far_wall[1]:.3f}",
-                         f"{pn.far_wall_force_noise(series)[0]:.3f}"])
-            print(rows[-1], flush=True)
-    path = cr.write_table(
-        "sensor_convergence",
-        ["run", "spacing (mm)", "far-wall sensor: mean", "noise", "far-wall force: mean"],
-        rows,
-        preamble="The far-wall sensor's mean and noise after the impact (t = "
-                 f"{dam.AFTER_IMPACT[0]:g}-{dam.AFTER_IMPACT[1]:g} s, over rho0 g H) and the far "
-                 "wall's force (over rho0 g H^2) at 4 mm and 2 mm, the runs ending at "
-                 f"t = {dam.AFTER_IMPACT[1] + 0.01:g} s. Produced by `scripts/sensor_support.py`.")
     print(open(path).read())
 
 
