@@ -3,8 +3,10 @@
 its damping (docs/shell.md, "Multi-rate windows and the shell's fast modes").
 
 Runs the coupled elastic plate (cases/elastic_plate.pbtxt, solid.model=shell,
-plate 1 mm) to t = 0.1 s at coupling.max_substeps 1 (synchronised), 8 and 0
-(automatic), once with the shell's damping and once without
+plate 1 mm) to t = 0.1 s at coupling.max_substeps 1 (synchronised), 8, 32
+(the windows the added-mass rule alone takes) and 0 (automatic: with the
+damping, windows bound by the shell's fastest mode, docs/auto_substeps.md),
+once with the shell's damping and once without
 (solid.shell_damping=false). For each: the stepping the coupler took, the
 mean window W (coupling steps over the run), omega_r W with omega_r the
 section's shear-rotation cut-off (solid/shell/shell_section.hpp), and the
@@ -25,7 +27,7 @@ import cosph_results as cr
 
 END = 0.1  # s
 INTERVALS = [(k * 0.02, (k + 1) * 0.02) for k in range(5)]
-SUBSTEPS = [1, 8, 0]
+SUBSTEPS = [1, 8, 32, 0]
 # The case's plate (cases/elastic_plate.pbtxt): E, nu, rho, thickness.
 E, NU, RHO, THICKNESS = 12.0e6, 0.4, 1100.0, 0.005
 SHEAR_CORRECTION = 5.0 / 6.0
