@@ -388,11 +388,11 @@ class Session {
     const double t = peers_[kFluid].state.time();
     const double end = settings_.run.end_time;
     const bool stop = t >= end - 1e-9 * end;
-    double dt = settings_.solid_at_fluid_step
-                    ? peers_[kFluid].state.proposed_dt()
-                    : common_step(peers_[kFluid].state.proposed_dt(),
-                                  peers_[kSolid].state.proposed_dt(), settings_.max_substeps,
-                                  settings_.max_window);
+    double dt =
+        settings_.solid_at_fluid_step
+            ? peers_[kFluid].state.proposed_dt()
+            : common_step(peers_[kFluid].state.proposed_dt(), peers_[kSolid].state.proposed_dt(),
+                          settings_.max_substeps, settings_.max_window);
     if (!(dt > 0.0) || !std::isfinite(dt))
       fail("a solver proposed a step that is not positive at t = " + std::to_string(t) + " s");
     dt = std::min(dt, end - t);

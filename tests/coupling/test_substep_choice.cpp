@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "sphcore/case_file.hpp"
 #include "common_step.hpp"
+#include "sphcore/case_file.hpp"
 #include "substep_choice.hpp"
 
 namespace {
@@ -134,8 +134,7 @@ TEST(SubstepChoice, TheDampedShellsFastestModeBoundsTheWindow) {
   const double c_G = std::sqrt(G / rho);
   const double zeta_r = omega_r * std::min(t, h) / (8.0 * c_G);
   const auto automatic = read_substep_choice(elastic_plate_case({"solid.model=shell"}));
-  const auto bounded =
-      account_for_the_solids_damping(automatic, {false, omega_r, zeta_r}, "shell");
+  const auto bounded = account_for_the_solids_damping(automatic, {false, omega_r, zeta_r}, "shell");
   EXPECT_NEAR(bounded.max_window, std::min(t, h) / (2.0 * c_G), 1e-12);
   EXPECT_LT(omega_r * bounded.max_window, 0.5);
   EXPECT_GT(bounded.max_substeps, 1) << bounded.reason;  // still multi-rate

@@ -319,8 +319,8 @@ TEST(Shell, StatesItsFastestModeAndItsDamping) {
   EXPECT_NEAR(per_frequency / (damping.eta_shear / (2.0 * section.G)), 1.0, 1e-12);
   EXPECT_LT(per_frequency, damping.eta_normal / (2.0 * section.E_plane));
   EXPECT_GT(mode.damping_ratio, 0.0);
-  const ShellSolver undamped = solver_of(plate_case("shell_fastest_undamped", 32,
-                                                    "shell_damping: false"));
+  const ShellSolver undamped =
+      solver_of(plate_case("shell_fastest_undamped", 32, "shell_damping: false"));
   EXPECT_EQ(undamped.fastest_mode().damping_ratio, 0.0);
 }
 
