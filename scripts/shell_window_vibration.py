@@ -54,13 +54,13 @@ def damping_ratios():
         eta_s = 0.25 * RHO * c_G * min(THICKNESS, 1.3 * dx)
         stiffness_inertia = SHEAR_CORRECTION * G * THICKNESS * RHO * THICKNESS ** 3 / 12.0
         cut_off.append(SHEAR_CORRECTION * THICKNESS * eta_s / (2.0 * math.sqrt(stiffness_inertia)))
-        bound.append(4.0 * cut_off[-1] / omega_r)
+        bound.append(2.0 * cut_off[-1] / omega_r)
     return ("Damping ratios of the shell's damping by its rule: the first bending mode "
             f"{bending:.1e} (at h = 1.3 mm); the shear-rotation cut-off "
             + " / ".join(f"{z:.2f}" for z in cut_off)
             + " at the mid-line spacings 2 / 1 / 0.5 mm (h = 1.3 dx); the axial and rotation "
             f"zigzags h / (2 ds) = {1.3 / 2:.2f}. The automatic stepping's window bound "
-            "4 zeta_r / omega_r (docs/auto_substeps.md, \"Solids with weakly damped modes\") at "
+            "2 zeta_r / omega_r (docs/auto_substeps.md, \"Solids with weakly damped modes\") at "
             "these spacings: " + " / ".join(f"{1e6 * w:.1f}" for w in bound) + " us, omega_r W <= "
             + " / ".join(f"{omega_r * w:.2f}" for w in bound) + ".")
 

@@ -103,12 +103,13 @@ SubstepChoice account_for_the_solids_damping(const SubstepChoice& choice,
                 " reports modes it does not damp, which the held forces of multi-rate windows "
                 "pump; docs/auto_substeps.md" +
                 added_mass + ")"};
-  const double max_window = 4.0 * zeta / (kCouplingStiffnessShare * omega);
+  const double max_window =
+      kDampingWindowMargin * 4.0 * zeta / (kCouplingStiffnessShare * omega);
   std::ostringstream why;
   why << multi_rate_words(choice.max_substeps) << ", windows at most " << max_window
       << " s (automatic: set by the damping of " << solid
       << " at its fastest mode: a held force's negative damping s omega W / 4 below the mode's "
-         "damping ratio, W <= 4 zeta / (s omega) with zeta "
+         "damping ratio with a safety factor 2, W <= 2 zeta / (s omega) with zeta "
       << zeta << ", omega " << omega << " rad/s, s " << kCouplingStiffnessShare
       << "; omega W <= " << omega * max_window << added_mass << ")";
   return {choice.max_substeps, choice.added_mass_ratio, why.str(), max_window};

@@ -76,14 +76,18 @@ struct SolidDamping {
 // held force is taken at: at most the whole (the coupling no stiffer than
 // the mode itself), the safe side, as the rule cannot know the share.
 inline constexpr double kCouplingStiffnessShare = 1.0;
+// The window is kept at this fraction of the length where the mode's own
+// damping only just outweighs the hold's: a safety factor 2, as the
+// added-mass ratio takes on its growth bound.
+inline constexpr double kDampingWindowMargin = 0.5;
 
 // A held force lags the motion it answers by about half a window, W/2: for a
 // mode of angular frequency omega and a coupling share s of its stiffness, a
 // negative damping ratio s omega W / 4 (docs/auto_substeps.md). The mode's
-// own damping ratio zeta outweighs it for
-//     W < 4 zeta / (s omega),
-// the window bound an automatic multi-rate choice takes from the solid's
-// Hello (max_window; the window is then no longer than that, nor shorter than
+// own damping ratio zeta outweighs it for W < 4 zeta / (s omega); with the
+// margin, an automatic multi-rate choice keeps
+//     W <= 2 zeta / (s omega),
+// the window bound it takes from the solid's Hello (max_window; the window is then no longer than that, nor shorter than
 // the smaller proposal: common_step.hpp). A solid that reports modes it does
 // not damp (zeta = 0) gets synchronised steps. An explicit max_substeps, a
 // choice that is synchronised already and a solid that sends nothing are
