@@ -2,18 +2,22 @@
 """The water particle that stops the coupled shell plate at the clamp
 (docs/shell.md, "Water drawn into the clamp's upstream face").
 
-Reads the run of scripts/validate_shell_coupled.py at the case's spacing
-(out/validation/shell_coupled_ds1; run that script first) and, if it stopped
-on a water particle, follows that particle through the fluid's snapshots: its
+Runs the coupled elastic plate with the shell at the case's spacing and
+coupling.max_substeps 8 (the run of issue 39 that stopped at the clamp; the
+window is held explicitly, so the rule of automatic windows does not move
+it) into out/validation/shell_clamp_contact_line, and, if it stopped on a
+water particle, follows that particle through the fluid's snapshots: its
 position, how deep it lies inside the plate's upstream face (x = 0.1 m; the
 shell's outer interface layer is half a solid spacing inside it), its
-pressure, density and speed, and how far it stands above the next water
-particle (it is the free surface's highest at the wall). For comparison, the
+pressure, density and speed, and how far it stands above the other water
+near it (it is the free surface's highest at the wall). For comparison, the
 deepest any water particle lies inside the water's own left wall (x < 0) in
 the same snapshot. Writes docs/results/shell_clamp_contact_line.md.
 
-usage: /usr/bin/python3 scripts/shell_clamp_contact_line.py
+usage: /usr/bin/python3 scripts/shell_clamp_contact_line.py [--reuse]
+  --reuse   analyse the run already in out/validation/shell_clamp_contact_line
 """
+import argparse
 import glob
 import os
 import re
@@ -23,7 +27,8 @@ import numpy as np
 
 import cosph_results as cr
 
-RUN = os.path.join(cr.REPO, "out", "validation", "shell_coupled_ds1")
+RUN = os.path.join(cr.REPO, "out", "validation", "shell_clamp_contact_line")
+SETTINGS = ["solid.model=shell", "coupling.max_substeps=8"]
 FACE_X = 0.1  # m, the plate's upstream face (cases/elastic_plate.pbtxt)
 EVERY = 2     # every other snapshot (0.04 s), and the last
 
@@ -39,6 +44,10 @@ def failing_particle():
 
 
 def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--reuse", action="store_true")
+    args = parser.parse_args()
+    cr.run_or_reuse("elastic_plate", RUN, SETTINGS, args.reuse)
     particle, failure = failing_particle()
     if particle is None:
         print(f"{RUN}: the run did not stop on a water particle; nothing to follow")
@@ -64,8 +73,8 @@ def main():
               "deepest water inside the left wall (mm)"]
     cr.write_table("shell_clamp_contact_line", header, rows,
                    "Written by `scripts/shell_clamp_contact_line.py` from the coupled shell plate "
-                   "at the case's spacing (`scripts/validate_shell_coupled.py`, automatic "
-                   f"stepping), which stopped with: {failure}. Water particle {particle}, from "
+                   "at the case's spacing and `coupling.max_substeps=8`, which stopped with: "
+                   f"{failure}. Water particle {particle}, from "
                    "the fluid's snapshots (every 0.04 s and the last).")
 
 
