@@ -3,8 +3,10 @@
 its damping (docs/shell.md, "Multi-rate windows and the shell's fast modes").
 
 Runs the coupled elastic plate (cases/elastic_plate.pbtxt, solid.model=shell,
-plate 1 mm) to t = 0.1 s at coupling.max_substeps 1 (synchronised), 8 and 0
-(automatic), once with the shell's damping and once without
+plate 1 mm) to t = 0.1 s at coupling.max_substeps 1 (synchronised), 8, 32
+(the windows the added-mass rule alone takes) and 0 (automatic: with the
+damping, windows bound by the shell's fastest mode, docs/auto_substeps.md),
+once with the shell's damping and once without
 (solid.shell_damping=false). For each: the stepping the coupler took, the
 mean window W (coupling steps over the run), omega_r W with omega_r the
 section's shear-rotation cut-off (solid/shell/shell_section.hpp), and the
@@ -25,7 +27,7 @@ import cosph_results as cr
 
 END = 0.1  # s
 INTERVALS = [(k * 0.02, (k + 1) * 0.02) for k in range(5)]
-SUBSTEPS = [1, 8, 0]
+SUBSTEPS = [1, 8, 32, 0]
 # The case's plate (cases/elastic_plate.pbtxt): E, nu, rho, thickness.
 E, NU, RHO, THICKNESS = 12.0e6, 0.4, 1100.0, 0.005
 SHEAR_CORRECTION = 5.0 / 6.0
@@ -46,16 +48,21 @@ def damping_ratios():
     c, c_G = math.sqrt(E_plane / RHO), math.sqrt(G / RHO)
     omega_1 = (1.875 / 0.079) ** 2 * math.sqrt(E_plane * THICKNESS ** 2 / (12.0 * RHO))
     bending = 0.5 * RHO * c * 1.3e-3 * omega_1 / (2.0 * E_plane)
-    cut_off = []
+    cut_off, bound = [], []
+    omega_r = rotation_frequency()
     for dx in (0.002, 0.001, 0.0005):
         eta_s = 0.25 * RHO * c_G * min(THICKNESS, 1.3 * dx)
         stiffness_inertia = SHEAR_CORRECTION * G * THICKNESS * RHO * THICKNESS ** 3 / 12.0
         cut_off.append(SHEAR_CORRECTION * THICKNESS * eta_s / (2.0 * math.sqrt(stiffness_inertia)))
+        bound.append(2.0 * cut_off[-1] / omega_r)
     return ("Damping ratios of the shell's damping by its rule: the first bending mode "
             f"{bending:.1e} (at h = 1.3 mm); the shear-rotation cut-off "
             + " / ".join(f"{z:.2f}" for z in cut_off)
             + " at the mid-line spacings 2 / 1 / 0.5 mm (h = 1.3 dx); the axial and rotation "
-            f"zigzags h / (2 ds) = {1.3 / 2:.2f}.")
+            f"zigzags h / (2 ds) = {1.3 / 2:.2f}. The automatic stepping's window bound "
+            "2 zeta_r / omega_r (docs/auto_substeps.md, \"Solids with weakly damped modes\") at "
+            "these spacings: " + " / ".join(f"{1e6 * w:.1f}" for w in bound) + " us, omega_r W <= "
+            + " / ".join(f"{omega_r * w:.2f}" for w in bound) + ".")
 
 
 def stepping(out):

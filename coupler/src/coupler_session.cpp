@@ -231,7 +231,9 @@ class Session {
       peer.particle_count = hello.particle_count();
       peer.max_h = hello.max_smoothing_length();
       peer.bounds = cp::from_proto(hello.bounds());
-      if (side == kSolid) solid_undamped_modes_ = hello.undamped_modes();
+      if (side == kSolid)
+        solid_damping_ = {hello.undamped_modes(), hello.fastest_mode_angular_frequency(),
+                          hello.fastest_mode_damping_ratio()};
     }
     take_the_solids_damping_into_account();
     for (int side : {kFluid, kSolid}) {
@@ -244,15 +246,16 @@ class Session {
               << peers_[kSolid].solver << "' at " << settings_.endpoint << std::endl;
   }
 
-  // A solid without dissipation for its fastest modes turns an automatic
-  // multi-rate choice into synchronised steps (substep_choice.hpp).
+  // The solid's damping can turn an automatic multi-rate choice into
+  // synchronised steps or bound its windows (substep_choice.hpp).
   void take_the_solids_damping_into_account() {
     if (settings_.solid_at_fluid_step) return;
-    const SubstepChoice choice = account_for_undamped_modes(
+    const SubstepChoice choice = account_for_the_solids_damping(
         {settings_.max_substeps, settings_.added_mass_ratio, settings_.stepping_reason},
-        solid_undamped_modes_, peers_[kSolid].solver);
-    if (choice.max_substeps == settings_.max_substeps) return;
+        solid_damping_, peers_[kSolid].solver);
+    if (choice.reason == settings_.stepping_reason) return;
     settings_.max_substeps = choice.max_substeps;
+    settings_.max_window = choice.max_window;
     settings_.stepping_reason = choice.reason;
     std::cout << "cosph-coupler: sub-stepping: " << choice.reason << std::endl;
   }
@@ -385,10 +388,11 @@ class Session {
     const double t = peers_[kFluid].state.time();
     const double end = settings_.run.end_time;
     const bool stop = t >= end - 1e-9 * end;
-    double dt = settings_.solid_at_fluid_step
-                    ? peers_[kFluid].state.proposed_dt()
-                    : common_step(peers_[kFluid].state.proposed_dt(),
-                                  peers_[kSolid].state.proposed_dt(), settings_.max_substeps);
+    double dt =
+        settings_.solid_at_fluid_step
+            ? peers_[kFluid].state.proposed_dt()
+            : common_step(peers_[kFluid].state.proposed_dt(), peers_[kSolid].state.proposed_dt(),
+                          settings_.max_substeps, settings_.max_window);
     if (!(dt > 0.0) || !std::isfinite(dt))
       fail("a solver proposed a step that is not positive at t = " + std::to_string(t) + " s");
     dt = std::min(dt, end - t);
@@ -565,7 +569,7 @@ class Session {
   }
 
   CouplerSettings settings_;
-  bool solid_undamped_modes_ = false;  // the solid's Hello: see account_for_undamped_modes
+  SolidDamping solid_damping_;  // from the solid's Hello: see account_for_the_solids_damping
   std::chrono::milliseconds timeout_;
   cp::BoundIpcFile ipc_file_;  // before the context: destroyed after it
   zmq::context_t context_{1};

@@ -3,6 +3,7 @@
 // compute the cross-phase forces and answer each side with its share.
 #pragma once
 
+#include <limits>
 #include <string>
 
 #include "cross_phase_forces.hpp"
@@ -22,8 +23,11 @@ struct CouplerSettings {
   std::string stepping_reason;  // for the run's log: which stepping and why
   // mu_W when the stepping was chosen automatically (substep_choice.hpp), else
   // -1: the solid's Hello can still make an automatic multi-rate choice
-  // synchronised (account_for_undamped_modes).
+  // synchronised or bound its windows (account_for_the_solids_damping).
   double added_mass_ratio = -1.0;
+  // s, the longest multi-rate window the solid's damping allows
+  // (account_for_the_solids_damping), set from its Hello; infinite: no bound.
+  double max_window = std::numeric_limits<double>::infinity();
   // coupling.solid_step = "fluid": the fluid's step, taken whole by the solid
   // too (a stability test that must end in an error).
   bool solid_at_fluid_step = false;

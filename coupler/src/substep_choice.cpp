@@ -87,15 +87,32 @@ SubstepChoice read_substep_choice(const sph::CaseFile& case_file) {
   }
 }
 
-SubstepChoice account_for_undamped_modes(const SubstepChoice& choice, bool undamped_modes,
-                                         const std::string& solid_name) {
+SubstepChoice account_for_the_solids_damping(const SubstepChoice& choice,
+                                             const SolidDamping& damping,
+                                             const std::string& solid_name) {
   const bool automatic_multi_rate = choice.added_mass_ratio >= 0.0 && choice.max_substeps > 1;
-  if (!undamped_modes || !automatic_multi_rate) return choice;
-  return {1, choice.added_mass_ratio,
-          "synchronised (automatic: the solid '" + solid_name +
-              "' reports modes it does not damp, which the held forces of multi-rate windows "
-              "pump; docs/auto_substeps.md. The added-mass ratio alone would allow multi-rate: " +
-              choice.reason + ")"};
+  const double omega = damping.fastest_mode_angular_frequency;
+  const double zeta = damping.fastest_mode_damping_ratio;
+  const bool states_a_mode = omega > 0.0 && std::isfinite(omega) && zeta >= 0.0;
+  if (!automatic_multi_rate || (!damping.undamped_modes && !states_a_mode)) return choice;
+  const std::string solid = "the solid '" + solid_name + "'";
+  const std::string added_mass = "; the added-mass ratio alone would allow " + choice.reason;
+  if (damping.undamped_modes || !(zeta > 0.0))
+    return {1, choice.added_mass_ratio,
+            "synchronised (automatic: " + solid +
+                " reports modes it does not damp, which the held forces of multi-rate windows "
+                "pump; docs/auto_substeps.md" +
+                added_mass + ")"};
+  const double max_window =
+      kDampingWindowMargin * 4.0 * zeta / (kCouplingStiffnessShare * omega);
+  std::ostringstream why;
+  why << multi_rate_words(choice.max_substeps) << ", windows at most " << max_window
+      << " s (automatic: set by the damping of " << solid
+      << " at its fastest mode: a held force's negative damping s omega W / 4 below the mode's "
+         "damping ratio with a safety factor 2, W <= 2 zeta / (s omega) with zeta "
+      << zeta << ", omega " << omega << " rad/s, s " << kCouplingStiffnessShare
+      << "; omega W <= " << omega * max_window << added_mass << ")";
+  return {choice.max_substeps, choice.added_mass_ratio, why.str(), max_window};
 }
 
 }  // namespace cosph::coupler

@@ -23,6 +23,7 @@
 // the processes on cores) and the coupler both decide before any step.
 #pragma once
 
+#include <limits>
 #include <string>
 
 #include "sphcore/case_file.hpp"
@@ -50,6 +51,9 @@ struct SubstepChoice {
   int max_substeps;              // 1: synchronised; more: multi-rate (common_step.hpp)
   double added_mass_ratio = -1;  // mu_W when chosen automatically, else -1
   std::string reason;            // for the run's log: what was chosen and why
+  // s, the longest multi-rate window the solid's damping allows
+  // (account_for_the_solids_damping); infinite: no such bound.
+  double max_window = std::numeric_limits<double>::infinity();
 };
 
 // The automatic choice from the added-mass ratio.
@@ -61,17 +65,36 @@ SubstepChoice choose_substeps(const AddedMassInputs& in);
 // Throws sph::ConfigError for a negative value.
 SubstepChoice read_substep_choice(const sph::CaseFile& case_file);
 
-// The solid's Hello says whether it has modes it does not damp (Hello field
-// undamped_modes). A held force lags the motion it answers by about half a
-// window, W/2: for a mode of angular frequency omega that is a phase lag
-// omega W / 2 and a negative damping ratio of the order of the coupling
-// stiffness's share times omega W / 4, which only the solid's own dissipation
-// can outweigh. Without any, a multi-rate window of any length lets the mode
-// grow (measured for the shell: docs/shell.md, "Coupled"), so an automatic
-// multi-rate choice becomes synchronised; an explicit max_substeps and a
-// choice that is synchronised already are returned unchanged.
-SubstepChoice account_for_undamped_modes(const SubstepChoice& choice, bool undamped_modes,
-                                         const std::string& solid_name);
+// What the solid's Hello says about its own dissipation (coupling.proto).
+struct SolidDamping {
+  bool undamped_modes = false;                // modes it does not damp at all
+  double fastest_mode_angular_frequency = 0;  // rad/s, omega; 0: not sent
+  double fastest_mode_damping_ratio = 0;      // zeta, by the solid's own damping
+};
+
+// The coupling's share of a mode's stiffness that the negative damping of a
+// held force is taken at: at most the whole (the coupling no stiffer than
+// the mode itself), the safe side, as the rule cannot know the share.
+inline constexpr double kCouplingStiffnessShare = 1.0;
+// The window is kept at this fraction of the length where the mode's own
+// damping only just outweighs the hold's: a safety factor 2, as the
+// added-mass ratio takes on its growth bound.
+inline constexpr double kDampingWindowMargin = 0.5;
+
+// A held force lags the motion it answers by about half a window, W/2: for a
+// mode of angular frequency omega and a coupling share s of its stiffness, a
+// negative damping ratio s omega W / 4 (docs/auto_substeps.md). The mode's
+// own damping ratio zeta outweighs it for W < 4 zeta / (s omega); with the
+// margin, an automatic multi-rate choice keeps
+//     W <= 2 zeta / (s omega),
+// the window bound it takes from the solid's Hello (max_window; the window is then no longer than that, nor shorter than
+// the smaller proposal: common_step.hpp). A solid that reports modes it does
+// not damp (zeta = 0) gets synchronised steps. An explicit max_substeps, a
+// choice that is synchronised already and a solid that sends nothing are
+// returned unchanged.
+SubstepChoice account_for_the_solids_damping(const SubstepChoice& choice,
+                                             const SolidDamping& damping,
+                                             const std::string& solid_name);
 
 // The thinnest of the case's solid.body regions, in m (0 without any): the
 // plate's thickness e, the lightest mass per unit of interface. A region's

@@ -73,8 +73,8 @@ Participant::~Participant() = default;
 
 sph::Region Participant::connect(PhaseKind phase, const std::string& solver_name,
                                  std::size_t particle_count, double max_smoothing_length,
-                                 const sph::Region& bounds, long resumed_step,
-                                 bool undamped_modes) {
+                                 const sph::Region& bounds, long resumed_step, bool undamped_modes,
+                                 FastestMode fastest_mode) {
   Envelope hello;
   Hello& h = *hello.mutable_hello();
   h.set_protocol_version(kProtocolVersion);
@@ -86,6 +86,8 @@ sph::Region Participant::connect(PhaseKind phase, const std::string& solver_name
   h.set_resumed(resumed_step >= 0);
   h.set_resumed_step(static_cast<std::uint64_t>(std::max(resumed_step, 0L)));
   h.set_undamped_modes(undamped_modes);
+  h.set_fastest_mode_angular_frequency(fastest_mode.angular_frequency);
+  h.set_fastest_mode_damping_ratio(fastest_mode.damping_ratio);
   send(impl_->socket, hello);
   const Envelope welcome = impl_->await("its Welcome");
   if (!welcome.has_welcome())

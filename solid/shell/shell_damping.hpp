@@ -42,6 +42,16 @@ struct ShellDamping {
   double zigzag_damping_ratio(const ShellSection& section, double ds) const {
     return eta_normal / (section.rho * section.sound_speed() * ds);
   }
+  // Damping ratio of the shear-rotation cut-off (the section turning against
+  // its shear, omega_r = sqrt(GA / (rho I))): k eta_s t / (2 sqrt(GA rho I)),
+  // so zeta / omega_r = eta_s / (2 G) = min(t, h) / (8 c_G). Every mode has
+  // zeta / omega = eta / (2 modulus) of the damping it strains: h / (4 c) on
+  // the normal rates, min(t, h) / (8 c_G) on the shear; the shear's is the
+  // smaller, min(t, h) / h sqrt(1 / (2 (1 - nu))) <= 1 times the other.
+  double rotation_damping_ratio(const ShellSection& section) const {
+    return kShearCorrection * eta_shear * section.thickness /
+           (2.0 * std::sqrt(section.GA() * section.inertia_per_length()));
+  }
   // Explicit (leapfrog) stepping of a damped oscillator is stable for
   // omega dt <= 2 (sqrt(1 + zeta^2) - zeta), the undamped bound shrunk by
   // this factor: the shell's sound limit takes it for its zigzags.

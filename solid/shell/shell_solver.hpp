@@ -72,6 +72,18 @@ class ShellSolver : public sph::ParticleSolver<ShellSolver, ShellParticles, Soli
   // Without its damping (solid.shell_damping false) the shell dissipates
   // nothing, and says so in its Hello (coupling.proto, undamped_modes).
   bool undamped_modes() const { return !forces_.damping.any(); }
+  // The fastest mode, the shear-rotation cut-off, and the damping ratio the
+  // damping gives it (Hello fields fastest_mode_*): of all the shell's modes
+  // the one with the least damping ratio per angular frequency
+  // (shell_damping.hpp), from which the coupler bounds its windows.
+  struct DampedMode {
+    double angular_frequency;  // rad/s
+    double damping_ratio;
+  };
+  DampedMode fastest_mode() const {
+    return {forces_.section.rotation_frequency(),
+            forces_.damping.rotation_damping_ratio(forces_.section)};
+  }
 
   // For tests: the state set directly (particles()), then update() for
   // strains and forces.

@@ -3,6 +3,7 @@
 // bad inputs, and the case's coupling.max_substeps read as set or automatic.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -10,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "common_step.hpp"
 #include "sphcore/case_file.hpp"
 #include "substep_choice.hpp"
 
@@ -89,28 +91,64 @@ TEST(SubstepChoice, TheCaseIsAutomaticByDefault) {
 // A solid that reports modes it does not damp (Hello field undamped_modes)
 // turns the automatic multi-rate choice into synchronised steps; the shell is
 // judged by that report, not by its name.
-TEST(SubstepChoice, TheShellStepsWithTheWater) {
-  using cosph::coupler::account_for_undamped_modes;
+TEST(SubstepChoice, TheUndampedShellStepsWithTheWater) {
+  using cosph::coupler::account_for_the_solids_damping;
   const auto automatic = read_substep_choice(elastic_plate_case({"solid.model=shell"}));
   ASSERT_GT(automatic.max_substeps, 1) << automatic.reason;  // by the added-mass ratio
   ASSERT_GE(automatic.added_mass_ratio, 0.0);
-  // A damped shell (the default), or a solid that does not send the field.
-  const auto damped = account_for_undamped_modes(automatic, false, "shell");
-  EXPECT_EQ(damped.max_substeps, automatic.max_substeps);
-  EXPECT_EQ(damped.reason, automatic.reason);
+  // A solid that sends nothing about its damping: the added-mass rule alone.
+  const auto silent = account_for_the_solids_damping(automatic, {}, "shell");
+  EXPECT_EQ(silent.max_substeps, automatic.max_substeps);
+  EXPECT_EQ(silent.reason, automatic.reason);
+  EXPECT_TRUE(std::isinf(silent.max_window));
   // Undamped: synchronised, and the log says why.
-  const auto undamped = account_for_undamped_modes(automatic, true, "shell");
+  const auto undamped = account_for_the_solids_damping(automatic, {true, 39477.0, 0.0}, "shell");
   EXPECT_EQ(undamped.max_substeps, 1);
   EXPECT_NE(undamped.reason.find("does not damp"), std::string::npos) << undamped.reason;
   EXPECT_NE(undamped.reason.find("'shell'"), std::string::npos) << undamped.reason;
+  // A fastest mode with no damping is the same statement.
+  EXPECT_EQ(account_for_the_solids_damping(automatic, {false, 39477.0, 0.0}, "s").max_substeps, 1);
   // Asked for, multi-rate still means what it says.
   const auto asked =
       read_substep_choice(elastic_plate_case({"solid.model=shell", "coupling.max_substeps=4"}));
-  EXPECT_EQ(account_for_undamped_modes(asked, true, "shell").max_substeps, 4);
+  const auto kept = account_for_the_solids_damping(asked, {true, 39477.0, 0.1}, "shell");
+  EXPECT_EQ(kept.max_substeps, 4);
+  EXPECT_TRUE(std::isinf(kept.max_window));
   // Synchronised already (a light plate): nothing to change.
   const auto light = read_substep_choice(elastic_plate_case({"solid.density=50"}));
   ASSERT_EQ(light.max_substeps, 1);
-  EXPECT_EQ(account_for_undamped_modes(light, true, "shell").reason, light.reason);
+  EXPECT_EQ(account_for_the_solids_damping(light, {true, 0.0, 0.0}, "shell").reason, light.reason);
+}
+
+// The damped shell of the elastic plate (plate 5 mm, E 12 MPa, nu 0.4,
+// rho 1100, line 1 mm, h = 1.3 mm): its shear-rotation cut-off omega_r and
+// the damping ratio its Kelvin-Voigt rule gives it bound the window at
+// 2 zeta / omega_r = min(t, h) / (4 c_G), about 5 us, where the added-mass
+// rule alone took the water's whole step, about 36 us (32 shell steps).
+TEST(SubstepChoice, TheDampedShellsFastestModeBoundsTheWindow) {
+  using cosph::coupler::account_for_the_solids_damping;
+  using cosph::coupler::common_step;
+  const double E = 12.0e6, nu = 0.4, rho = 1100.0, t = 0.005, h = 1.3 * 0.001;
+  const double G = E / (2.0 * (1.0 + nu)), k = 5.0 / 6.0;
+  const double omega_r = std::sqrt(12.0 * k * G / rho) / t;
+  const double c_G = std::sqrt(G / rho);
+  const double zeta_r = omega_r * std::min(t, h) / (8.0 * c_G);
+  const auto automatic = read_substep_choice(elastic_plate_case({"solid.model=shell"}));
+  const auto bounded = account_for_the_solids_damping(automatic, {false, omega_r, zeta_r}, "shell");
+  EXPECT_NEAR(bounded.max_window, std::min(t, h) / (4.0 * c_G), 1e-12);
+  EXPECT_LT(omega_r * bounded.max_window, 0.25);
+  EXPECT_GT(bounded.max_substeps, 1) << bounded.reason;  // still multi-rate
+  EXPECT_NE(bounded.reason.find("windows at most"), std::string::npos) << bounded.reason;
+  EXPECT_NE(bounded.reason.find("zeta"), std::string::npos) << bounded.reason;
+  // The proposals of the measured run (water 36.5 us, shell 1.5 us): the old
+  // rule took the water's whole step; the bound cuts the window to 2 zeta /
+  // omega, and never below the shell's own step.
+  const double water = 36.5e-6, shell = 1.5e-6;
+  EXPECT_DOUBLE_EQ(common_step(water, shell, automatic.max_substeps), water);
+  EXPECT_DOUBLE_EQ(common_step(water, shell, bounded.max_substeps, bounded.max_window),
+                   bounded.max_window);
+  EXPECT_LT(common_step(water, shell, bounded.max_substeps, bounded.max_window), 0.3 * water);
+  EXPECT_DOUBLE_EQ(common_step(water, 20e-6, bounded.max_substeps, bounded.max_window), 20e-6);
 }
 
 TEST(SubstepChoice, AnExplicitValueMeansWhatItSays) {

@@ -122,7 +122,7 @@ class CoupledRun {
     sph::Region region = participant_.connect(
         settings_.phase, settings_.solver_description, announced_particle_count(solver_),
         solver_.max_smoothing_length(), solver_.interaction_bounds(), resuming ? windows_ : -1,
-        has_undamped_modes(solver_));
+        has_undamped_modes(solver_), fastest_mode_of(solver_));
     connected_ = true;
     sph::ProgressReporter progress(run_.end_time);
     if (!resuming) reply = exchange(region, solver_.time(), windows_);

@@ -6,6 +6,7 @@
 #include <concepts>
 #include <vector>
 
+#include "participant/participant.hpp"
 #include "sphcore/gauge.hpp"
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/region.hpp"
@@ -79,6 +80,26 @@ bool has_undamped_modes(const Solver& solver) {
     return solver.undamped_modes();
   else
     return false;
+}
+
+// Optional: a solid that damps its modes may state its fastest mode's
+// angular frequency and the damping ratio it gives it (Hello fields
+// fastest_mode_*), from which the coupler bounds automatic multi-rate
+// windows; one without the member states nothing.
+template <class Solver>
+concept ReportsFastestMode = requires(const Solver& solver) {
+  { solver.fastest_mode().angular_frequency } -> std::convertible_to<double>;
+  { solver.fastest_mode().damping_ratio } -> std::convertible_to<double>;
+};
+
+template <class Solver>
+FastestMode fastest_mode_of(const Solver& solver) {
+  if constexpr (ReportsFastestMode<Solver>) {
+    const auto mode = solver.fastest_mode();
+    return {mode.angular_frequency, mode.damping_ratio};
+  } else {
+    return {};
+  }
 }
 
 }  // namespace cosph::coupling

@@ -17,6 +17,13 @@ namespace cosph::coupling {
 
 enum class PhaseKind { fluid, solid };
 
+// A solid's fastest mode and the damping ratio its own dissipation gives it
+// (Hello fields fastest_mode_*, coupling.proto); 0, 0: not stated.
+struct FastestMode {
+  double angular_frequency = 0.0;  // rad/s
+  double damping_ratio = 0.0;
+};
+
 struct StepReply {
   double dt;                            // the common step to take next
   std::vector<sph::Vec2> acceleration;  // per particle sent, in the order sent
@@ -43,10 +50,12 @@ class Participant {
   // The handshake. Returns the region to send particles from first.
   // resumed_step: the coupling step of the checkpoint the solver resumes
   // from, or -1 for a run from the start. undamped_modes: the solver has
-  // modes it does not damp (Hello field undamped_modes, coupling.proto).
+  // modes it does not damp (Hello field undamped_modes, coupling.proto);
+  // fastest_mode: its fastest mode's damping, if it states it.
   sph::Region connect(PhaseKind phase, const std::string& solver_name, std::size_t particle_count,
                       double max_smoothing_length, const sph::Region& bounds,
-                      long resumed_step = -1, bool undamped_modes = false);
+                      long resumed_step = -1, bool undamped_modes = false,
+                      FastestMode fastest_mode = {});
 
   // One step's exchange, in two halves so that a solver can work between
   // them: its interface state out, then the coupler's answer for it in.

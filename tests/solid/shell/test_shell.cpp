@@ -305,6 +305,25 @@ TEST(Shell, DampingStopsTheShearRotationMode) {
   }
 }
 
+// The Hello's fastest mode (coupling.proto, fastest_mode_*): the shear-rotation
+// cut-off and the damping ratio of the Kelvin-Voigt rule there, whose
+// zeta / omega = eta_s / (2 G) is the least of the shell's (the normal
+// rates' is eta_n / (2 E')); the coupler's window bound is 4 zeta / omega.
+TEST(Shell, StatesItsFastestModeAndItsDamping) {
+  const ShellSolver solver = solver_of(plate_case("shell_fastest", 32));
+  const ShellSection& section = solver.force_parameters().section;
+  const ShellDamping& damping = solver.force_parameters().damping;
+  const auto mode = solver.fastest_mode();
+  EXPECT_DOUBLE_EQ(mode.angular_frequency, section.rotation_frequency());
+  const double per_frequency = mode.damping_ratio / mode.angular_frequency;
+  EXPECT_NEAR(per_frequency / (damping.eta_shear / (2.0 * section.G)), 1.0, 1e-12);
+  EXPECT_LT(per_frequency, damping.eta_normal / (2.0 * section.E_plane));
+  EXPECT_GT(mode.damping_ratio, 0.0);
+  const ShellSolver undamped =
+      solver_of(plate_case("shell_fastest_undamped", 32, "shell_damping: false"));
+  EXPECT_EQ(undamped.fastest_mode().damping_ratio, 0.0);
+}
+
 // First-mode period of the Antoci plate at 8 particles along the free length,
 // against Euler-Bernoulli in plane strain (T = 0.0678 s): the target
 // is 1 % (docs/results/shell.md; the Timoshenko beam the shell converges to is
