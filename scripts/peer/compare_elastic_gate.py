@@ -195,7 +195,14 @@ def main():
             f"79 mm plate, {1e3 * cosph_period:.2f} ms at 7.8 MPa. The diagnostic row runs the "
             f"shell once at {effective / 1e6:.2f} MPa: RMS {1e3 * effective_rms[0]:.2f} / "
             f"{1e3 * effective_rms[1]:.2f} mm against {1e3 * rms['shell'][0]:.2f} / "
-            f"{1e3 * rms['shell'][1]:.2f} mm at the nominal modulus.")
+            f"{1e3 * rms['shell'][1]:.2f} mm at the nominal modulus, and the peer's "
+            f"{1e3 * rms['peer'][0]:.2f} / {1e3 * rms['peer'][1]:.2f} mm: the softer modulus "
+            f"closes {1e3 * (rms['shell'][0] - effective_rms[0]):.2f} mm of the "
+            f"{1e3 * (rms['shell'][0] - rms['peer'][0]):.2f} mm gap in x "
+            f"({100 * (rms['shell'][0] - effective_rms[0]) / (rms['shell'][0] - rms['peer'][0]):.0f} %) "
+            f"and {1e3 * (rms['shell'][1] - effective_rms[1]):.2f} mm of the "
+            f"{1e3 * (rms['shell'][1] - rms['peer'][1]):.2f} mm gap in y "
+            f"({100 * (rms['shell'][1] - effective_rms[1]) / (rms['shell'][1] - rms['peer'][1]):.0f} %).")
         print(vacuum_text.strip())
     path = cr.write_table("peer_elastic_gate",
                           ["run", "tip x RMS (mm)", "tip y RMS (mm)",

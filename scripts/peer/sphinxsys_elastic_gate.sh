@@ -51,6 +51,8 @@ if [[ ! -d "$CHECKOUT/src" ]]; then
   git -C "$CHECKOUT" checkout "$PINNED"
 fi
 git -C "$CHECKOUT" rev-parse HEAD > "$OUT/commit.txt"
+[[ "$(cat "$OUT/commit.txt")" == "$PINNED" ]] ||
+  echo "note: $CHECKOUT is at $(cat "$OUT/commit.txt"), not the pinned $PINNED" >&2
 
 if [[ ! -f "$BUILD/build.ninja" ]]; then
   cmake -S "$HERE" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release \
@@ -68,9 +70,9 @@ start=$(date +%s.%N)
 if [[ $PROGRAM == test_2d_elastic_gate ]]; then
   # No VTP snapshots: the comparison is of the computation (the test itself also leaves
   # them out of its own timing).
-  (cd "$RUN" && "$BUILD/bin/$PROGRAM" --state_recording=0 >"$OUT/run.log" 2>&1) || true
+  (cd "$RUN" && "$BUILD/$PROGRAM" --state_recording=0 >"$OUT/run.log" 2>&1) || true
 else
-  (cd "$RUN" && "$BUILD/bin/$PROGRAM" >"$OUT/run.log" 2>&1)
+  (cd "$RUN" && "$BUILD/$PROGRAM" >"$OUT/run.log" 2>&1)
 fi
 end=$(date +%s.%N)
 /usr/bin/python3 -c "print(round($end - $start, 2))" > "$OUT/wall_time.txt"
