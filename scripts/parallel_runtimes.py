@@ -47,6 +47,10 @@ def run(repeat, tbb_build):
     openmp_bin = os.environ.get("COSPH_BIN", os.path.join(cr.REPO, "build", "bin"))
     builds = [("OpenMP", openmp_bin), ("oneTBB", os.path.join(os.path.abspath(tbb_build), "bin"))]
     times, loads = measure(repeat, builds)
+    return write(times, loads, repeat)
+
+
+def write(times, loads, repeat):
     reference = times[("OpenMP",) + RUNS[0]]
 
     def against(key, base=reference):
@@ -59,8 +63,10 @@ def run(repeat, tbb_build):
                      f"{min(ms):.3f} to {max(ms):.3f}", f"{statistics.median(r):.2f}",
                      f"{min(r):.2f} to {max(r):.2f}"])
 
-    def speed_up(runtime):
-        return statistics.median(against((runtime, "quiet", 2), times[(runtime, "quiet", 1)]))
+    def paired(key, base):
+        """base's time over key's, round by round: the median, and its range."""
+        r = against(key, times[base])
+        return f"{statistics.median(r):.2f} (from {min(r):.2f} to {max(r):.2f})"
 
     def busy_two(runtime):
         return statistics.median(against((runtime, "busy", 2)))
@@ -73,11 +79,17 @@ def run(repeat, tbb_build):
         f"cores; the load average before each run was {min(loads):.1f} to {max(loads):.1f}). "
         "\"Busy\": one competing `sh -c 'while :; do :; done'`. The ratio is OpenMP's quiet "
         "one-thread time per step over the row's, within each round; above 1 is faster. "
-        f"Measured: quiet, two threads against the same build's one, OpenMP "
-        f"{speed_up('OpenMP'):.2f}, oneTBB {speed_up('oneTBB'):.2f} (target 1.8); busy, two "
-        f"threads, OpenMP {busy_two('OpenMP'):.2f}, oneTBB {busy_two('oneTBB'):.2f}, against "
-        f"OpenMP's busy one-thread fallback {statistics.median(against(('OpenMP', 'busy', 1))):.2f}"
-        " (target 0.8).")
+        "Measured, round by round: quiet, two threads against the same build's one, OpenMP "
+        f"{paired(('OpenMP', 'quiet', 2), ('OpenMP', 'quiet', 1))}, oneTBB "
+        f"{paired(('oneTBB', 'quiet', 2), ('oneTBB', 'quiet', 1))} (target 1.8), and oneTBB's "
+        f"two threads against OpenMP's two {paired(('oneTBB', 'quiet', 2), ('OpenMP', 'quiet', 2))}"
+        f", its one thread against OpenMP's one "
+        f"{paired(('oneTBB', 'quiet', 1), ('OpenMP', 'quiet', 1))}; busy, oneTBB's "
+        "two threads against OpenMP's one-thread fallback, run next to it, "
+        f"{paired(('oneTBB', 'busy', 2), ('OpenMP', 'busy', 1))}; busy, two threads, of "
+        f"OpenMP's quiet one thread, OpenMP {busy_two('OpenMP'):.2f}, oneTBB "
+        f"{busy_two('oneTBB'):.2f}, and OpenMP's fallback "
+        f"{statistics.median(against(('OpenMP', 'busy', 1))):.2f} (target 0.8).")
     return cr.write_table("parallel_runtimes", ["runtime", "machine", "threads",
                                                 "time per step (ms, median)", "range (ms)",
                                                 "OpenMP quiet one thread / this", "range"],
