@@ -7,7 +7,8 @@ runs on a quiet machine and beside a competing busy process instead
 test suite.
 
 usage: /usr/bin/python3 scripts/benchmark.py [--steps N] [--repeat R]
-       /usr/bin/python3 scripts/benchmark.py --busy [--repeat R] [--end-time T] [--candidates]"""
+       /usr/bin/python3 scripts/benchmark.py --busy [--repeat R] [--end-time T] [--candidates]
+                                                [--tbb-build DIR]"""
 import argparse
 import math
 import os
@@ -31,9 +32,13 @@ def main():
                         help="--busy: simulated time of each run (s)")
     parser.add_argument("--candidates", action="store_true",
                         help="--busy: also the runtimes the default was chosen against")
+    parser.add_argument("--tbb-build", metavar="DIR",
+                        help="--busy: also the dam break on DIR, a build with "
+                             "-DCOSPH_PARALLEL=tbb, against OpenMP, whole runs and in "
+                             "cosph-bench (docs/results/parallel_runtimes.md)")
     args = parser.parse_args()
     if args.busy:
-        busy_machine.run(args.repeat or 3, args.end_time, args.candidates)
+        busy_machine.run(args.repeat or 3, args.end_time, args.candidates, args.tbb_build)
         return
     args.repeat = args.repeat or 7
     bin_dir = os.environ.get("COSPH_BIN", os.path.join(cr.REPO, "build", "bin"))

@@ -2,7 +2,9 @@
 the launcher on a quiet machine and with one competing CPU-bound process
 (`sh -c 'while :; do :; done'`, started and stopped here), side by side and
 alternating, and their ratio against the quiet one-thread run. Writes
-docs/results/busy_machine.md."""
+docs/results/busy_machine.md. With a build of -DCOSPH_PARALLEL=tbb (--tbb-build),
+the dam break's rows on oneTBB too, and cosph-bench on both builds
+(docs/results/parallel_runtimes.md)."""
 import contextlib
 import os
 import resource
@@ -12,6 +14,7 @@ import tempfile
 import time
 
 import cosph_results as cr
+import parallel_runtimes
 
 # The issue's scenes: the fluid alone at about 20 000 particles, and the
 # coupled elastic plate multi-rate (its main case), both short.
@@ -37,6 +40,29 @@ CANDIDATES = [
     ("busy, default, not pinned (--no-pin)", True, [], ["--no-pin"], {}),
     ("quiet, default, not pinned (--no-pin)", False, [], ["--no-pin"], {}),
 ]
+
+# With --tbb-build: the rows that compare OpenMP with oneTBB on the dam break,
+# two threads asked for rather than left to the default, which a machine
+# loaded by others turns into one. The oneTBB rows run the other build's
+# executables (COSPH_BIN), set in tbb_rows.
+TBB = "oneTBB build: "
+OPENMP_TWO_THREADS = [
+    ("quiet, two threads", False, ["run.threads=2"], [], {}),
+    CANDIDATES[0],  # busy, two threads always
+]
+TBB_ROWS = [
+    (TBB + "quiet, one thread", False, ["run.threads=1"], [], {}),
+    (TBB + "quiet, two threads", False, ["run.threads=2"], [], {}),
+    (TBB + "busy, default", True, [], [], {}),
+    (TBB + "busy, two threads always", True, ["run.threads=2"], [], {}),
+]
+
+
+def tbb_rows(tbb_build):
+    """The rows that compare the runtimes, the oneTBB ones on tbb_build's executables."""
+    env = {"COSPH_BIN": os.path.join(os.path.abspath(tbb_build), "bin")}
+    return OPENMP_TWO_THREADS + [(label, busy, extra, options, {**environment, **env})
+                                 for label, busy, extra, options, environment in TBB_ROWS]
 
 
 @contextlib.contextmanager
@@ -80,7 +106,7 @@ def load():
         return float(loadavg.read().split()[0])
 
 
-def measure(repeat, end_time, candidates):
+def measure(repeat, end_time, candidates, tbb_build=None):
     """{(scene, label): [wall seconds per run]}, {(scene, label): [CPU seconds
     per run]}, and the load averages seen."""
     variants = [REFERENCE] + VARIANTS + (CANDIDATES if candidates else [])
@@ -89,6 +115,8 @@ def measure(repeat, end_time, candidates):
         # The plate's candidates that only pin or unpin matter for; the dam
         # break runs one process, which the launcher never pins.
         chosen = [v for v in variants if case == "elastic_plate" or not v[3]]
+        if tbb_build and case == "dam_break":
+            chosen += [v for v in tbb_rows(tbb_build) if v[0] not in [c[0] for c in chosen]]
         for _ in range(repeat):
             for label, busy, extra, options, env in chosen:
                 run_settings = settings + [f"run.end_time={end_time}"] + extra
@@ -122,6 +150,27 @@ def ratios(times, scene, label):
     return [t1 / t for t1, t in zip(times[(scene, REFERENCE[0])], times[(scene, label)])]
 
 
+def runtimes_compared(times):
+    """What the oneTBB rows say against OpenMP's, or nothing without them."""
+    scene = SCENES[0][0]
+    if (scene, TBB + "busy, two threads always") not in times:
+        return ""
+
+    def ratio(label, reference=REFERENCE[0]):
+        return statistics.median(t1 / t for t1, t in zip(times[(scene, reference)],
+                                                         times[(scene, label)]))
+
+    return (
+        f" oneTBB (a build with -DCOSPH_PARALLEL=tbb, the rows \"{TBB}...\"; its loops cut "
+        "into chunks that idle threads take from the others), on the dam break: busy with two "
+        f"threads always {ratio(TBB + 'busy, two threads always'):.2f} of OpenMP's quiet "
+        f"one-thread speed (OpenMP's two threads always {ratio(CANDIDATES[0][0]):.2f}, its "
+        f"default on a busy machine {ratio('busy, default'):.2f}); quiet, two threads "
+        f"{ratio(TBB + 'quiet, two threads', TBB + 'quiet, one thread'):.2f} times its own one "
+        f"thread (OpenMP {ratio('quiet, two threads'):.2f}); its one thread "
+        f"{ratio(TBB + 'quiet, one thread'):.2f} of OpenMP's.")
+
+
 def write(times, cpu, loads, repeat, end_time):
     rows = []
     for scene, _, _ in SCENES:
@@ -150,7 +199,7 @@ def write(times, cpu, loads, repeat, end_time):
         "of quiet one-thread speed; quiet, two threads at least 1.8 times one (the fluid's "
         "particle-steps on the benchmark's scenes are in the table above). Measured: "
         + "; ".join(f"{scene}, busy {busy[scene]:.2f}, quiet default {quiet[scene]:.2f}"
-                    for scene in busy) + ".\n\n"
+                    for scene in busy) + "." + runtimes_compared(times) + "\n\n"
         "What a busy machine leaves. Beside one CPU-bound process on two cores, a scheduler "
         "that shares the cores fairly among runnable threads gives a run that keeps u cores "
         "busy on a quiet machine at most 2 / (1 + u) of its quiet speed: while it has one "
@@ -171,8 +220,8 @@ def write(times, cpu, loads, repeat, end_time):
         "its own, a core counting as free while others use less than a quarter of it), and "
         "looks again every second; results are the same bits on any thread count. On a busy "
         "machine a solver then runs one thread, which has no barrier to wait at (the row "
-        "\"busy, one thread\" is what it reaches). A work-stealing runtime (oneTBB), whose "
-        "loops need not wait for a thread without a core, was not measured. In a "
+        "\"busy, one thread\" is what it reaches). oneTBB, a work-stealing runtime, "
+        "is measured against OpenMP in docs/performance.md (\"OpenMP or oneTBB\"). In a "
         "multi-rate coupled run the launcher pins each solver to cores of its own, on a busy "
         "machine too: left to the scheduler (the row \"not pinned\"), both solvers can share "
         "one core while the outside job holds the other; pinned, the job shares a core with "
@@ -182,6 +231,8 @@ def write(times, cpu, loads, repeat, end_time):
                                            "range"], rows, preamble=preamble)
 
 
-def run(repeat, end_time, candidates):
-    times, cpu, loads = measure(repeat, end_time, candidates)
+def run(repeat, end_time, candidates, tbb_build=None):
+    times, cpu, loads = measure(repeat, end_time, candidates, tbb_build)
     print(write(times, cpu, loads, repeat, end_time))
+    if tbb_build:
+        print(parallel_runtimes.run(repeat, tbb_build))

@@ -20,9 +20,9 @@ namespace cosph::fluid {
 
 namespace kernel = sph::kernel;
 
-// The neighbour passes keep OpenMP's own loops rather than sph::parallel_for:
-// written as its lambdas, the two pair passes ran slower on large scenes,
-// while a region of one thread costs only a system call on small ones.
+// The neighbour passes run through sph::parallel_pass rather than
+// sph::parallel_for: flattened into its loop, the two pair passes ran slower
+// on large scenes.
 
 namespace {
 double support_squared(const FluidParameters& par) {
@@ -41,12 +41,11 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
   P.grad_rho_next.resize(P.size());
   P.volume.resize(P.size());
   P.spray.resize(P.size());
-#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
-  for (long i = 0; i < n; ++i) P.volume[i] = P.m[i] / P.rho[i];
+  const bool threaded = sph::worth_threads(P.size());
+  sph::parallel_pass(n, threaded, [&](long i) { P.volume[i] = P.m[i] / P.rho[i]; });
 
-#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
-  for (long i = 0; i < n; ++i) {
-    if (!P.is_water(i)) continue;
+  sph::parallel_pass(n, threaded, [&](long i) {
+    if (!P.is_water(i)) return;
     const Vec2 x_i = P.x[i], v_i = P.v[i], grad_rho_i = P.grad_rho[i];
     const double rho_i = P.rho[i];
     sph::GradientSums sums;
@@ -94,7 +93,7 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
     P.spray[i] = !wall_in_reach && !gradient.renormalised;
     P.grad_rho_next[i] = gradient.L * grad_rho_raw;
     P.tau[i] = viscous_stress(par.mu, gradient.grad_v);
-  }
+  });
   P.grad_rho.swap(P.grad_rho_next);
 }
 
@@ -102,9 +101,8 @@ std::vector<int> walls_in_reach(const FluidParticles& P, const sph::CellGrid& gr
   const long n = static_cast<long>(P.size());
   const double reach2 = reach * reach;
   std::vector<std::uint8_t> in_reach(P.size(), 0);
-#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
-  for (long w = 0; w < n; ++w) {
-    if (P.is_water(w)) continue;
+  sph::parallel_pass(n, sph::worth_threads(P.size()), [&](long w) {
+    if (P.is_water(w)) return;
     const Vec2 x_w = P.x[w];
     bool found = false;
     grid.for_each_candidate_range(x_w, [&](int begin, int end) {
@@ -112,7 +110,7 @@ std::vector<int> walls_in_reach(const FluidParticles& P, const sph::CellGrid& gr
         found = P.is_water(f) && (x_w - P.x[f]).squaredNorm() < reach2;
     });
     in_reach[w] = found;
-  }
+  });
   std::vector<int> walls;
   for (long w = 0; w < n; ++w)
     if (in_reach[w]) walls.push_back(static_cast<int>(w));
@@ -140,8 +138,7 @@ void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid,
   const long n = static_cast<long>(walls.size());
   const double support2 = support_squared(par);
   const kernel::ShapedValue W_of(par.kernel, par.h);
-#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
-  for (long k = 0; k < n; ++k) {
+  sph::parallel_pass(n, sph::worth_threads(P.size()), [&](long k) {
     const int w = walls[k];
     const Vec2 x_w = P.x[w];
     sph::WallPressureSum sum;
@@ -161,7 +158,7 @@ void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid,
     // the pow().
     P.rho[w] = P.p[w] == 0.0 ? eos.rho0() : eos.density(P.p[w]);
     P.tau[w] = Mat2::Zero();
-  }
+  });
 }
 
 void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
@@ -169,17 +166,16 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
   const long n = static_cast<long>(P.size());
   P.sigma.resize(P.size());
   P.inverse_rho.resize(P.size());
-#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
-  for (long i = 0; i < n; ++i) {
+  const bool threaded = sph::worth_threads(P.size());
+  sph::parallel_pass(n, threaded, [&](long i) {
     P.sigma[i] = total_stress(P.p[i], P.tau[i]);
     P.inverse_rho[i] = 1.0 / P.rho[i];
-  }
+  });
 
   // Each pair of water particles is worked out once, by the lower index, which
   // gives the higher one its share (sph::OrderedShares): half the pair terms
   // of visiting every pair from both ends. A wall has no list and needs no
   // acceleration; the water visits its walls from its own side.
-  const bool threaded = sph::worth_threads(P.size());
   P.a.resize(P.size());
   sph::OrderedShares<Vec2>& shares = P.a_shares;
   const long blocks = shares.prepare(n, threaded, [&](long i) -> long {
@@ -187,8 +183,7 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
     return neighbours.empty() ? i : neighbours.back();
   });
   const MomentumDissipation Pi_of(par.dissipation, par.h, par.c0, par.A, par.B);
-#pragma omp parallel for schedule(static) if (threaded)
-  for (long b = 0; b < blocks; ++b) {
+  sph::parallel_pass(blocks, threaded, [&](long b) {
     for (long i = shares.begin(b); i < shares.end(b); ++i) P.a[i].setZero();
     for (long i = shares.begin(b); i < shares.end(b); ++i) {
       if (!P.is_water(i)) continue;
@@ -223,11 +218,11 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
       }
       P.a[i] += a_i;
     }
-  }
+  });
   shares.merge(P.a, threaded);
-#pragma omp parallel for schedule(static) if (threaded)
-  for (long i = 0; i < n; ++i)
+  sph::parallel_pass(n, threaded, [&](long i) {
     P.a[i] = P.is_water(i) ? Vec2(P.a[i] + par.run.gravity) : Vec2::Zero();
+  });
 }
 
 std::vector<Vec2> forces_on_walls(const FluidParticles& P, const sph::NeighbourList& pairs,

@@ -34,23 +34,22 @@ void compute_particle_shifts(FluidParticles& P, const sph::NeighbourList& pairs,
   const DeltaPlusShifting shifting(par.c0 * dt / par.h, par.h, W_of(par.dx));
   P.shift.resize(P.size());
   P.on_surface.resize(P.size());
-#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
-  for (long i = 0; i < n; ++i) {
+  const bool threaded = sph::worth_threads(P.size());
+  sph::parallel_pass(n, threaded, [&](long i) {
     P.on_surface[i] =
         P.is_water(i) && DeltaPlusShifting::on_surface(smallest_eigenvalue(
                              shifting_sums(P, pairs, i, W_of, shifting, [](int) {}).M()));
-  }
-#pragma omp parallel for schedule(static) if (sph::worth_threads(P.size()))
-  for (long i = 0; i < n; ++i) {
+  });
+  sph::parallel_pass(n, threaded, [&](long i) {
     if (!P.is_water(i)) {
       P.shift[i].setZero();
-      continue;
+      return;
     }
     bool near_surface = false;
     const ShiftingSums sums = shifting_sums(P, pairs, i, W_of, shifting,
                                             [&](int j) { near_surface |= P.on_surface[j] != 0; });
     P.shift[i] = shifting.shift(sums, near_surface);
-  }
+  });
 }
 
 }  // namespace cosph::fluid

@@ -1,6 +1,7 @@
 #include "sphcore/cell_grid.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -15,24 +16,19 @@ void CellGrid::build(std::span<const Vec2> x, double range, int subdivisions) {
   const double cell_size = range / static_cast<double>(reach_);
   cell_size_ = cell_size;
   inverse_cell_size_ = 1.0 / cell_size;
-  const bool parallel = worth_threads(n);
-  const long count = static_cast<long>(n);
   Vec2 lo = Vec2::Constant(0.0), hi = Vec2::Constant(0.0);
   if (n > 0) {
-    double lo_x = x[0].x(), lo_y = x[0].y(), hi_x = lo_x, hi_y = lo_y;
-    bool finite = true;
-#pragma omp parallel for schedule(static) if (parallel) reduction(min : lo_x, lo_y) \
-    reduction(max : hi_x, hi_y) reduction(&& : finite)
-    for (long i = 0; i < count; ++i) {
-      // Checked per particle: min and max pass a NaN by (NaN < a is false).
-      finite = finite && x[i].allFinite();
-      lo_x = std::min(lo_x, x[i].x());
-      lo_y = std::min(lo_y, x[i].y());
-      hi_x = std::max(hi_x, x[i].x());
-      hi_y = std::max(hi_y, x[i].y());
-    }
-    if (!finite) throw std::runtime_error("neighbour search: a particle position is not finite");
-    lo = Vec2(lo_x, lo_y);
+    // The box as the largest of -x, -y, x and y; the last quantity is 1 for a
+    // position that is not finite, checked per particle: max passes a NaN by
+    // (NaN < a is false).
+    const auto box_of = [&](long i) {
+      return std::array{-x[i].x(), -x[i].y(), x[i].x(), x[i].y(), x[i].allFinite() ? 0.0 : 1.0};
+    };
+    const auto [minus_lo_x, minus_lo_y, hi_x, hi_y, not_finite] =
+        parallel_max(n, box_of(0), worth_threads(n), box_of);
+    if (not_finite != 0.0)
+      throw std::runtime_error("neighbour search: a particle position is not finite");
+    lo = Vec2(-minus_lo_x, -minus_lo_y);
     hi = Vec2(hi_x, hi_y);
   }
   origin_ = lo;

@@ -70,6 +70,37 @@ TEST_P(OnThreads, ParallelAnyIsTheSerialScansAnswer) {
   }
 }
 
+// The neighbour lists keep a store per share: the shares must cover every
+// index once, each within its own numbered share.
+TEST_P(OnThreads, SharesCoverEveryIndexOnceInNumberedShares) {
+  for (const std::size_t n : {std::size_t{0}, std::size_t{7}, std::size_t{10001}}) {
+    const long shares = share_count(n, kTeamAtAnySize);
+    EXPECT_GE(shares, 1);
+    if (GetParam() == 1) {
+      EXPECT_EQ(shares, 1);
+    }
+    std::vector<long> share_of(n, -1);
+    std::vector<int> seen(static_cast<std::size_t>(shares), 0);
+    for_each_share(n, kTeamAtAnySize, [&](long begin, long end, long share) {
+      ASSERT_LT(share, shares);
+      ++seen[static_cast<std::size_t>(share)];
+      for (long i = begin; i < end; ++i) {
+        EXPECT_EQ(share_of[i], -1) << "index " << i << " twice";
+        share_of[i] = share;
+      }
+    });
+    EXPECT_EQ(std::count(share_of.begin(), share_of.end(), -1), 0) << "n = " << n;
+    for (const int times : seen) EXPECT_LE(times, 1) << "n = " << n;
+  }
+}
+
+TEST_P(OnThreads, ParallelPassVisitsEveryIndexOnce) {
+  const std::size_t n = 10001;
+  std::vector<int> visits(n, 0);
+  parallel_pass(n, worth_threads(n), [&](long i) { ++visits[i]; });
+  EXPECT_EQ(std::count(visits.begin(), visits.end(), 1), static_cast<long>(n));
+}
+
 INSTANTIATE_TEST_SUITE_P(Threads, OnThreads, ::testing::Values(1, 2));
 
 }  // namespace

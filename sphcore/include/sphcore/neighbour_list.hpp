@@ -16,11 +16,10 @@
 // grid search would, in fewer tests and without re-sorting the particles. The
 // owner of the list decides when to rebuild it; the skin decides speed only.
 //
-// Each thread keeps the lists of the particles it owns under a static
-// schedule, which the passes use too, so building needs no merge.
+// Each share of the particles (a thread's under OpenMP's static schedule, which
+// the passes use too; a chunk on TBB) keeps its particles' lists in a store of
+// its own, so building needs no merge.
 #pragma once
-
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -37,9 +36,9 @@ namespace sph {
 
 namespace detail {
 
-// One thread's lists: the first `size` entries of j (and of value, for a list
+// One share's lists: the first `size` entries of j (and of value, for a list
 // that keeps one per pair) are in use. A cache line of its own: each thread
-// moves its `size` on every particle, and two stores sharing a line made the
+// moves its store's `size` on every particle, and two stores sharing a line made the
 // line bounce between the cores (false sharing).
 template <bool kWithValue>
 struct alignas(64) PairStore {
@@ -55,20 +54,21 @@ struct alignas(64) PairStore {
   }
 };
 
-// Where each particle's list lies: in which thread's store, from where, how long.
+// Where each particle's list lies: in which share's store, from where, how long.
 template <bool kWithValue>
 class PerThreadLists {
  public:
-  // Runs append(i, store) for every i in [0, n) under a static schedule, the
-  // store being the calling thread's; append adds i's entries at its end.
+  // Runs append(i, store) for every i in [0, n), the store being that of i's
+  // share (for_each_share); append adds i's entries at its end.
   template <class Append>
   void fill(std::size_t n, std::size_t entries_per_particle, Append&& append) {
     first_.resize(n);
     count_.resize(n);
     owner_.resize(n);
-    stores_.resize(static_cast<std::size_t>(omp_get_max_threads()));
-    for_each_share(n, worth_threads(n), [&](long share_begin, long share_end) {
-      const int owner = omp_get_thread_num();
+    const bool use_team = worth_threads(n);
+    stores_.resize(static_cast<std::size_t>(share_count(n, use_team)));
+    for_each_share(n, use_team, [&](long share_begin, long share_end, long share) {
+      const int owner = static_cast<int>(share);
       Store& store = stores_[static_cast<std::size_t>(owner)];
       store.reserve(entries_per_particle * (n / stores_.size() + 1));
       store.size = 0;

@@ -1,9 +1,22 @@
-// The particle loops of the solvers, on the OpenMP team when that is worth it
+// The particle loops of the solvers, on several threads when that is worth it
 // and as plain loops otherwise. Every loop of the solvers gives the same result
 // on any number of threads, so this decides speed only.
+//
+// The threads are OpenMP's team, or with -DCOSPH_PARALLEL=tbb oneTBB's workers
+// (docs/performance.md measures both on a quiet and on a busy machine). The
+// thread count is OpenMP's setting in both builds (omp_set_num_threads, as
+// sph::RunThreads and the tests set it, a plain variable that starts no
+// thread): the TBB build runs its loops in an arena of that many threads.
 #pragma once
 
 #include <omp.h>
+#if COSPH_PARALLEL_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+#endif
 
 #include <algorithm>
 #include <array>
@@ -52,17 +65,92 @@ inline std::pair<long, long> static_share(long n) {
   return {begin, begin + share};
 }
 
-// range(begin, end) once for each thread's share of [0, n) under a static
-// schedule, or once for all of it when the loop runs alone.
+#if COSPH_PARALLEL_TBB
+namespace detail {
+// A loop on TBB is cut into this many chunks per thread, whatever its length:
+// a thread that finishes its chunks takes the others' (work stealing), so a
+// loop waits for a thread that lost its core only while that thread holds a
+// chunk, not for a fixed half of the loop.
+inline constexpr long kChunksPerThread = 8;
+
+// The arena of OpenMP's thread count, made anew when the count changes.
+inline tbb::task_arena& arena() {
+  static tbb::task_arena run_arena(1);
+  static int threads = 0;
+  if (const int wanted = omp_get_max_threads(); wanted != threads) {
+    if (run_arena.is_active()) run_arena.terminate();
+    run_arena.initialize(wanted);
+    threads = wanted;
+  }
+  return run_arena;
+}
+
+inline long chunk_count(long n) {
+  return std::min(n, kChunksPerThread * omp_get_max_threads());
+}
+
+// chunk(begin, end, c) for the chunks c of [0, n), on the arena; each chunk is
+// a task of its own (simple_partitioner, grain 1).
+template <class Chunk>
+void for_each_chunk(long n, Chunk&& chunk) {
+  const long chunks = chunk_count(n);
+  arena().execute([&] {
+    tbb::parallel_for(
+        tbb::blocked_range<long>(0, chunks, 1),
+        [&](const tbb::blocked_range<long>& r) {
+          for (long c = r.begin(); c < r.end(); ++c) chunk(n * c / chunks, n * (c + 1) / chunks, c);
+        },
+        tbb::simple_partitioner());
+  });
+}
+
+// The reduction of chunk(begin, end, identity) over the chunks of [0, n)
+// with join(a, b), on the arena.
+template <class Result, class Chunk, class Join>
+Result reduce_chunks(long n, Result identity, Chunk&& chunk, Join&& join) {
+  const long chunks = chunk_count(n);
+  return arena().execute([&] {
+    return tbb::parallel_reduce(
+        tbb::blocked_range<long>(0, chunks, 1), identity,
+        [&](const tbb::blocked_range<long>& r, Result result) {
+          for (long c = r.begin(); c < r.end(); ++c)
+            result = join(result, chunk(n * c / chunks, n * (c + 1) / chunks, identity));
+          return result;
+        },
+        join, tbb::simple_partitioner());
+  });
+}
+}  // namespace detail
+#endif
+
+// How many shares for_each_share cuts [0, n) into: one per thread of the
+// team (OpenMP), a fixed number of chunks per thread (TBB), or one.
+inline long share_count(std::size_t n, bool use_team) {
+  if (!on_team(use_team)) return 1;
+#if COSPH_PARALLEL_TBB
+  return std::max(1L, detail::chunk_count(static_cast<long>(n)));
+#else
+  (void)n;
+  return omp_get_max_threads();
+#endif
+}
+
+// range(begin, end, share) once for each share of [0, n), numbered from 0 to
+// share_count - 1: each thread's under a static schedule (OpenMP), each chunk
+// (TBB), or all of it when the loop runs alone.
 template <class Range>
 void for_each_share(std::size_t n, bool use_team, Range&& range) {
   const long count = static_cast<long>(n);
-  if (!on_team(use_team)) return range(0L, count);
+  if (!on_team(use_team)) return range(0L, count, 0L);
+#if COSPH_PARALLEL_TBB
+  detail::for_each_chunk(count, range);
+#else
 #pragma omp parallel
   {
     const auto [begin, end] = static_share(count);
-    range(begin, end);
+    range(begin, end, static_cast<long>(omp_get_thread_num()));
   }
+#endif
 }
 
 // The helpers below run `body` in one loop over a range, which both the plain
@@ -74,7 +162,7 @@ void for_each_share(std::size_t n, bool use_team, Range&& range) {
 template <class Body>
 void parallel_for(std::size_t n, bool use_team, Body&& body) {
   for_each_share(
-      n, use_team, [&body](long begin, long end) __attribute__((flatten)) {
+      n, use_team, [&body](long begin, long end, long) __attribute__((flatten)) {
         for (long i = begin; i < end; ++i) body(i);
       });
 }
@@ -82,6 +170,27 @@ void parallel_for(std::size_t n, bool use_team, Body&& body) {
 template <class Body>
 void parallel_for(std::size_t n, Body&& body) {
   parallel_for(n, worth_threads(n), std::forward<Body>(body));
+}
+
+// body(i) for every i in [0, n), for the neighbour passes, whose bodies are
+// large: not flattened (written through parallel_for, the two pair passes ran
+// slower on large scenes), and on OpenMP a `parallel for` of the body itself,
+// whose region of one thread costs only a system call on small scenes.
+template <class Body>
+void parallel_pass(std::size_t n, bool use_team, const Body& body) {
+  const long count = static_cast<long>(n);
+#if COSPH_PARALLEL_TBB
+  if (!on_team(use_team)) {
+    for (long i = 0; i < count; ++i) body(i);
+    return;
+  }
+  detail::for_each_chunk(count, [&body](long begin, long end, long) {
+    for (long i = begin; i < end; ++i) body(i);
+  });
+#else
+#pragma omp parallel for schedule(static) if (use_team)
+  for (long i = 0; i < count; ++i) body(i);
+#endif
 }
 
 namespace detail {
@@ -115,6 +224,12 @@ Maxima parallel_max(std::size_t n, Maxima none, bool use_team, Value&& value) {
   };
   const long count = static_cast<long>(n);
   if (!on_team(use_team)) return loop(0, count, none);
+#if COSPH_PARALLEL_TBB
+  return detail::reduce_chunks(count, none, loop, [](Maxima a, const Maxima& b) {
+    detail::keep_larger(a, b);
+    return a;
+  });
+#else
   constexpr std::size_t kCount = sizeof(Maxima) / sizeof(double);
   Maxima largest = none;
   double* const shared = detail::values_of(largest);
@@ -127,6 +242,7 @@ Maxima parallel_max(std::size_t n, Maxima none, bool use_team, Value&& value) {
     std::copy(detail::values_of(mine), detail::values_of(mine) + kCount, shared);
   }
   return largest;
+#endif
 }
 
 template <class Value>
@@ -144,6 +260,16 @@ long parallel_find_first(std::size_t n, Found&& found) {
   };
   const long count = static_cast<long>(n);
   if (!threaded(n)) return loop(0, count);
+#if COSPH_PARALLEL_TBB
+  // A chunk without a hit gives count, which no hit exceeds.
+  return detail::reduce_chunks(
+      count, count,
+      [&loop, count](long begin, long end, long) {
+        const long i = loop(begin, end);
+        return i < end ? i : count;
+      },
+      [](long a, long b) { return std::min(a, b); });
+#else
   long first = count;
 #pragma omp parallel reduction(min : first)
   {
@@ -151,6 +277,7 @@ long parallel_find_first(std::size_t n, Found&& found) {
     if (const long i = loop(begin, end); i < end) first = i;
   }
   return first;
+#endif
 }
 
 // Whether found(i) holds for some i in [0, n). Every i is tested, with no
@@ -166,6 +293,11 @@ bool parallel_any(std::size_t n, bool use_team, Found&& found) {
   };
   const long count = static_cast<long>(n);
   if (!on_team(use_team)) return loop(0, count);
+#if COSPH_PARALLEL_TBB
+  return detail::reduce_chunks(
+      count, false, [&loop](long begin, long end, bool) { return loop(begin, end); },
+      [](bool a, bool b) { return a || b; });
+#else
   bool any = false;
 #pragma omp parallel reduction(|| : any)
   {
@@ -173,6 +305,7 @@ bool parallel_any(std::size_t n, bool use_team, Found&& found) {
     any = loop(begin, end);
   }
   return any;
+#endif
 }
 
 }  // namespace sph
