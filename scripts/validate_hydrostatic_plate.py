@@ -204,8 +204,11 @@ def main():
                  "The water's force on the plate, over the same window, against the water's "
                  "weight rho g H L, and Timoshenko's deflection under that force and the "
                  "plate's weight: what the coupling passed, apart from the solid's own error. "
-                 "The shell with the case's 8 shell steps a coupling window; the Jaumann solid "
-                 "with the coupler's automatic choice (multi-rate, 32).")
+                 "Both solids with the coupler's automatic choice unless the row says otherwise: "
+                 "multi-rate, the shell's windows bound by its damping (docs/auto_substeps.md), "
+                 "the Jaumann solid's at 32 steps. Rows marked not rerun were run before that "
+                 "bound (the shell's) or are kept from an earlier table (the Jaumann solid's); "
+                 "wall times on the shared machine.")
     print(open(os.path.join(cr.RESULTS, "hydrostatic_plate.md")).read())
 
 
