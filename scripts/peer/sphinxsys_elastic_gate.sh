@@ -4,23 +4,25 @@
 #
 #   scripts/peer/sphinxsys_elastic_gate.sh [--checkout DIR] [--build DIR] [--vacuum] OUT
 #
-# --checkout  a SPHinXsys checkout (default /work/peer/SPHinXsys, cloned from GitHub
+# --checkout  a SPHinXsys checkout (default $COSPH_PEER_DIR/SPHinXsys, cloned from GitHub
 #             at PINNED if absent; an existing checkout is used at whatever commit it is,
 #             and the commit is written to OUT/commit.txt)
-# --build     the build folder (default /work/peer/build): 2-D library, Release, -j2, ccache;
+# --build     the build folder (default $COSPH_PEER_DIR/build): 2-D library, Release, -j2, ccache;
 #             only the gate's two programs (scripts/peer/CMakeLists.txt) are built
 # --vacuum    run the gate alone in vacuum (elastic_gate_in_vacuum.cpp) instead of the
 #             elastic-gate test
 # Writes OUT/tip.csv (t_s, tip_dx_m, tip_dy_m: the free end's displacement, x positive
 # downstream like cosph's) or, with --vacuum, OUT/vacuum.csv (t_s, mid_dx_m, corner_dx_m),
 # and OUT/wall_time.txt (seconds, the program's run alone, not the build).
+# COSPH_PEER_DIR defaults to the repository's out/peer (not tracked).
 # Installs nothing: prints the apt-get line when a package is missing.
 set -euo pipefail
 
 PINNED=9f33297dc609355dfe36f55426c8a64c35cb80d5  # master of 24 Jul 2026
 HERE="$(cd "$(dirname "$0")" && pwd)"
-CHECKOUT=/work/peer/SPHinXsys
-BUILD=/work/peer/build
+PEER_DIR="${COSPH_PEER_DIR:-$(cd "$HERE/../.." && pwd)/out/peer}"
+CHECKOUT="$PEER_DIR/SPHinXsys"
+BUILD="$PEER_DIR/build"
 PROGRAM=test_2d_elastic_gate
 while [[ $# -gt 1 ]]; do
   case "$1" in
@@ -30,7 +32,7 @@ while [[ $# -gt 1 ]]; do
     *) echo "unknown option $1" >&2; exit 2 ;;
   esac
 done
-[[ $# -eq 1 ]] || { sed -n '5,17p' "$0" >&2; exit 2; }
+[[ $# -eq 1 ]] || { sed -n '5,18p' "$0" >&2; exit 2; }
 OUT="$(mkdir -p "$1" && cd "$1" && pwd)"
 
 # Boost headers, Eigen and GTest's CMake files are needed too, but come with
