@@ -103,8 +103,7 @@ SubstepChoice account_for_the_solids_damping(const SubstepChoice& choice,
                 " reports modes it does not damp, which the held forces of multi-rate windows "
                 "pump; docs/auto_substeps.md" +
                 added_mass + ")"};
-  const double max_window =
-      kDampingWindowMargin * 4.0 * zeta / (kCouplingStiffnessShare * omega);
+  const double max_window = kDampingWindowMargin * 4.0 * zeta / (kCouplingStiffnessShare * omega);
   std::ostringstream why;
   why << multi_rate_words(choice.max_substeps) << ", windows at most " << max_window
       << " s (automatic: set by the damping of " << solid

@@ -87,8 +87,8 @@ inline constexpr double kDampingWindowMargin = 0.5;
 // own damping ratio zeta outweighs it for W < 4 zeta / (s omega); with the
 // margin, an automatic multi-rate choice keeps
 //     W <= 2 zeta / (s omega),
-// the window bound it takes from the solid's Hello (max_window; the window is then no longer than that, nor shorter than
-// the smaller proposal: common_step.hpp). A solid that reports modes it does
+// the window bound it takes from the solid's Hello (max_window; the window is then no longer than
+// that, nor shorter than the smaller proposal: common_step.hpp). A solid that reports modes it does
 // not damp (zeta = 0) gets synchronised steps. An explicit max_substeps, a
 // choice that is synchronised already and a solid that sends nothing are
 // returned unchanged.
