@@ -152,6 +152,21 @@ def rms_error(t_model, y_model, t_ref, y_ref):
     return float(np.sqrt(np.mean(difference ** 2)))
 
 
+def antoci_rms(axis, t, displacement, until=None):
+    """RMS (m) of the elastic plate's free-end displacement along AXIS ("x" or
+    "y") against Antoci et al. 2007, over the experimental points up to UNTIL
+    (by default the curve's last time: a run that stopped early is scored on
+    what it reached). The one measure of every elastic plate table."""
+    experiment = reference(f"antoci2007_plate_exp_{axis}.csv")
+    within = experiment["t_s"] <= (t[-1] if until is None else until)
+    return rms_error(t, displacement, experiment["t_s"][within], experiment[f"d{axis}_m"][within])
+
+
+def antoci_tip_rms(series, until=None):
+    """antoci_rms in x and y (m) of a cosph timeseries (its tip_dx, tip_dy)."""
+    return [antoci_rms(axis, series["t"], series[f"tip_d{axis}"], until) for axis in "xy"]
+
+
 def running_mean(series, width):
     """The centred running mean of SERIES over WIDTH samples, at the samples
     WIDTH // 2 from either end (the others have no full window); returns

@@ -40,12 +40,7 @@ def force_noise(out):
 
 def tip_errors(out):
     series = cr.read_csv(os.path.join(out, "timeseries.csv"))
-    errors = []
-    for axis in "xy":
-        experiment = cr.reference(f"antoci2007_plate_exp_{axis}.csv")
-        errors.append(cr.rms_error(series["t"], series[f"tip_d{axis}"], experiment["t_s"],
-                                   experiment[f"d{axis}_m"]))
-    return errors, series["t"][-1]
+    return cr.antoci_tip_rms(series), series["t"][-1]
 
 
 def fracture_summary(out):

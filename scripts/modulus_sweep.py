@@ -39,26 +39,13 @@ def runs():
                 f"solid.poisson_ratio={PEER_POISSON}"])
 
 
-def tip_rms(series, experiment):
-    """RMS x, y (mm) of the free end over the experimental points the run reached."""
-    t = series["t"]
-    errors = []
-    for axis in "xy":
-        within = experiment[axis]["t_s"] <= t[-1]
-        errors.append(1e3 * cr.rms_error(t, series[f"tip_d{axis}"], experiment[axis]["t_s"][within],
-                                         experiment[axis][f"d{axis}_m"][within]))
-    return errors
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--reuse", action="store_true")
     parser.add_argument("--only", action="append", default=[])
     args = parser.parse_args()
-    experiment = {axis: cr.reference(f"antoci2007_plate_exp_{axis}.csv") for axis in "xy"}
     peer = {axis: cr.reference(f"elastic_gate_num_sphinxsys_{axis}.csv") for axis in "xy"}
-    peer_rms = [1e3 * cr.rms_error(peer[axis]["t_s"], peer[axis][f"d{axis}_m"],
-                                   experiment[axis]["t_s"], experiment[axis][f"d{axis}_m"])
+    peer_rms = [1e3 * cr.antoci_rms(axis, peer[axis]["t_s"], peer[axis][f"d{axis}_m"])
                 for axis in "xy"]
     rows, points = [], {}
     for solid, modulus, poisson, suffix, settings in runs():
@@ -70,7 +57,7 @@ def main():
             print(f"skipping {suffix}: no run in {out}")
             continue
         series = cr.read_csv(path)
-        rms = tip_rms(series, experiment)
+        rms = [1e3 * error for error in cr.antoci_tip_rms(series)]
         points.setdefault((solid, poisson), []).append((modulus / 1e6, rms))
         rows.append([dict(SOLIDS)[solid], f"{modulus / 1e6:g}", f"{poisson:g}", f"{rms[0]:.1f}",
                      f"{rms[1]:.1f}", f"{series['t'][-1]:.3f}", failure])

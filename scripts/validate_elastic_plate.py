@@ -154,13 +154,9 @@ def main():
         series = cr.read_csv(os.path.join(out, "timeseries.csv"))
         t, reached = series["t"], series["t"][-1]
         first = first or (out, series)
-        errors, reached_points = [], 0
-        for k, axis in enumerate("xy"):
-            within = experiment[axis]["t_s"] <= reached
-            reached_points = int(np.sum(within)) if axis == "x" else reached_points
-            error = cr.rms_error(t, series[f"tip_d{axis}"], experiment[axis]["t_s"][within],
-                                 experiment[axis][f"d{axis}_m"][within])
-            errors.append(error)
+        errors = cr.antoci_tip_rms(series)
+        reached_points = int(np.sum(experiment["x"]["t_s"] <= reached))
+        for k, (axis, error) in enumerate(zip("xy", errors)):
             axes[k].plot(t, 1e3 * series[f"tip_d{axis}"], f"C{n}", lw=2 if n == 0 else 1.3,
                          label=f"cosph, {label}: RMS {1e3 * error:.1f} mm")
         steps, coupler_clock, share, own_per_step, exposed, imbalance = coupling_cost(out)
@@ -196,8 +192,8 @@ def main():
         errors = []
         for k, axis in enumerate("xy"):
             ref = cr.reference(f"elastic_gate_num_{key}_{axis}.csv")
-            errors.append(cr.rms_error(ref["t_s"], ref[f"d{axis}_m"], experiment[axis]["t_s"],
-                                       experiment[axis][f"d{axis}_m"]))
+            # Every experimental point, also past a digitised curve's end (held there).
+            errors.append(cr.antoci_rms(axis, ref["t_s"], ref[f"d{axis}_m"], until=np.inf))
             style = ["--", ":", "-."][PUBLISHED.index((label, key))]
             axes[k].plot(ref["t_s"], 1e3 * ref[f"d{axis}_m"], style, color="0.45", lw=1.2,
                          label=f"{label}: RMS {1e3 * errors[-1]:.1f} mm")

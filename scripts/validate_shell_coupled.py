@@ -59,25 +59,15 @@ def convergence_words(rms):
     return halving_words(rms, CONVERGENCE, "automatic stepping")
 
 
-def tip_rms(run, until, experiment):
-    """RMS x, y (m) of a run's tip over the experimental points up to `until`."""
-    t, series = run
-    return [cr.rms_error(t, series[f"tip_d{axis}"],
-                         experiment[axis]["t_s"][experiment[axis]["t_s"] <= until],
-                         experiment[axis][f"d{axis}_m"][experiment[axis]["t_s"] <= until])
-            for axis in "xy"]
-
-
 def halving_words(rms, runs, stepping_name):
     """Each halving compared over the time both runs reached (a run that
     stopped early is compared up to its stop, and the words say so)."""
-    experiment = {axis: cr.reference(f"antoci2007_plate_exp_{axis}.csv") for axis in "xy"}
     words = []
     for (coarse, dx_c), (fine, dx_f) in zip(runs, runs[1:]):
         if coarse not in rms or fine not in rms:
             continue
         until = min(rms[coarse][0][-1], rms[fine][0][-1])
-        ec, ef = tip_rms(rms[coarse], until, experiment), tip_rms(rms[fine], until, experiment)
+        ec, ef = cr.antoci_tip_rms(rms[coarse][1], until), cr.antoci_tip_rms(rms[fine][1], until)
         span = "" if until >= END_TIME - 1e-6 else f" (to t = {until:.3f} s, where a run stopped)"
         words.append(f"{1e3 * dx_c:g} to {1e3 * dx_f:g} mm: {1e3 * abs(ef[0] - ec[0]):.1f} / "
                      f"{1e3 * abs(ef[1] - ec[1]):.1f} mm{span}")
@@ -110,13 +100,10 @@ def main():
             continue
         series = cr.read_csv(os.path.join(out, "timeseries.csv"))
         t = series["t"]
-        errors = []
+        errors = cr.antoci_tip_rms(series)
         for k, axis in enumerate("xy"):
-            within = experiment[axis]["t_s"] <= t[-1]
-            errors.append(cr.rms_error(t, series[f"tip_d{axis}"], experiment[axis]["t_s"][within],
-                                       experiment[axis][f"d{axis}_m"][within]))
             axes[k].plot(t, 1e3 * series[f"tip_d{axis}"], f"C{n}",
-                         label=f"{label.split(' (')[0]}: RMS {1e3 * errors[-1]:.1f} mm")
+                         label=f"{label.split(' (')[0]}: RMS {1e3 * errors[k]:.1f} mm")
         rms[suffix] = (t, series)
         after = t >= VIBRATION_FROM
         speed = (f"{np.max(series['solid_max_speed'][after]):.2f}"

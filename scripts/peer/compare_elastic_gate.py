@@ -44,12 +44,7 @@ COSPH = [("cosph shell", "shell", ["solid.model=shell"] + PEER_SETTINGS),
 def tip_rms(t, dx, dy):
     """RMS of the free end's x and y displacement against Antoci 2007 (m), over the
     experimental points the run reached, as scripts/validate_elastic_plate.py."""
-    errors = []
-    for axis, series in (("x", dx), ("y", dy)):
-        ref = cr.reference(f"antoci2007_plate_exp_{axis}.csv")
-        within = ref["t_s"] <= t[-1]
-        errors.append(cr.rms_error(t, series, ref["t_s"][within], ref[f"d{axis}_m"][within]))
-    return errors
+    return [cr.antoci_rms("x", t, dx), cr.antoci_rms("y", t, dy)]
 
 
 # Where the experiment's plate stays deflected and exact-stiffness codes rebound.
