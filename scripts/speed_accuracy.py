@@ -55,8 +55,9 @@ def main():
             for point in sorted(points, key=lambda p: (p["series"], p["wall_s"]))]
     cr.write_table("speed_accuracy", ["scene, option", "run", "wall time (s)", "error"], rows,
                    preamble="Error against wall time of the validation runs, by "
-                            "`scripts/speed_accuracy.py` from what `validate_dam_break.py` and "
-                            "`validate_elastic_plate.py` recorded. Dam break: RMS relative error "
+                            "`scripts/speed_accuracy.py` from what `validate_dam_break.py`, "
+                            "`validate_elastic_plate.py` and `validate_shell_coupled.py` "
+                            "recorded. Dam break: RMS relative error "
                             "of the front (T <= 3.1); elastic plate: RMS error of the tip's x "
                             "displacement over the experimental points. Wall times come from "
                             "a shared machine: runs made at the same time slow each other.")

@@ -90,7 +90,7 @@ def main():
     for k, axis in enumerate("xy"):
         axes[k].plot(experiment[axis]["t_s"], 1e3 * experiment[axis][f"d{axis}_m"], "ko",
                      label="Antoci 2007 (experiment)", zorder=5)
-    rows, rms = [], {}
+    rows, rms, points = [], {}, []
     for n, (label, suffix, settings) in enumerate(RUNS):
         out = os.path.join(cr.REPO, "out", "validation", f"shell_coupled_{suffix}")
         reuse = args.reuse or bool(args.only and suffix not in args.only)
@@ -105,6 +105,12 @@ def main():
             axes[k].plot(t, 1e3 * series[f"tip_d{axis}"], f"C{n}",
                          label=f"{label.split(' (')[0]}: RMS {1e3 * errors[k]:.1f} mm")
         rms[suffix] = (t, series)
+        # The automatic runs of the convergence on the speed-accuracy chart
+        # (scripts/speed_accuracy.py), beside the continuum solids' rows.
+        if suffix in dict(CONVERGENCE) and t[-1] >= END_TIME - 1e-6 and wall:
+            points.append({"series": "elastic plate, automatic, shell", "label": label.split(" (")[0],
+                           "wall_s": wall, "error": 1e3 * errors[0],
+                           "error_name": "tip x RMS (mm)"})
         after = t >= VIBRATION_FROM
         speed = (f"{np.max(series['solid_max_speed'][after]):.2f}"
                  if "solid_max_speed" in series and np.any(after) else "")
@@ -115,6 +121,7 @@ def main():
         axes[k].legend(fontsize=7)
     fig.tight_layout()
     fig.savefig(os.path.join(cr.FIGURES, "shell_coupled.png"), dpi=110)
+    cr.write_points("shell_coupled", points)
     cr.write_table("shell_coupled",
                    ["run", "stepping", "tip x RMS (mm)", "tip y RMS (mm)",
                     f"largest shell speed after {VIBRATION_FROM} s (m/s)", "reached t (s)",
