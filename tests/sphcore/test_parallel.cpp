@@ -94,6 +94,37 @@ TEST_P(OnThreads, SharesCoverEveryIndexOnceInNumberedShares) {
   }
 }
 
+// The neighbour lists keep a store per chunk, and the chunks go to whichever
+// thread is free: each chunk must be one contiguous run of indices, numbered
+// in index order, and together they must cover every index once.
+TEST_P(OnThreads, ChunksAreContiguousNumberedInOrderAndCoverEveryIndexOnce) {
+  for (const std::size_t n : {std::size_t{0}, std::size_t{7}, std::size_t{10001}}) {
+    const long chunks = chunk_count(n, kTeamAtAnySize);
+    EXPECT_GE(chunks, 1);
+    if (GetParam() == 1) {
+      EXPECT_EQ(chunks, 1);
+    } else if (n > 100) {
+      EXPECT_GT(chunks, GetParam()) << "one chunk per thread balances nothing";
+    }
+    std::vector<long> begin_of(static_cast<std::size_t>(chunks), -1),
+        end_of(static_cast<std::size_t>(chunks), -1);
+    std::vector<int> visits(n, 0);
+    for_each_chunk(n, kTeamAtAnySize, [&](long begin, long end, long chunk) {
+      ASSERT_GE(chunk, 0);
+      ASSERT_LT(chunk, chunks);
+      begin_of[static_cast<std::size_t>(chunk)] = begin;
+      end_of[static_cast<std::size_t>(chunk)] = end;
+      for (long i = begin; i < end; ++i) ++visits[static_cast<std::size_t>(i)];
+    });
+    EXPECT_EQ(std::count(visits.begin(), visits.end(), 1), static_cast<long>(n)) << "n = " << n;
+    for (long c = 0; c < chunks; ++c) {
+      EXPECT_EQ(begin_of[static_cast<std::size_t>(c)],
+                c == 0 ? 0 : end_of[static_cast<std::size_t>(c - 1)])
+          << "chunk " << c << " of " << chunks << ", n = " << n;
+    }
+  }
+}
+
 TEST_P(OnThreads, ParallelPassVisitsEveryIndexOnce) {
   const std::size_t n = 10001;
   std::vector<int> visits(n, 0);

@@ -54,25 +54,26 @@ struct alignas(64) PairStore {
   }
 };
 
-// Where each particle's list lies: in which share's store, from where, how long.
+// Where each particle's list lies: in which chunk's store, from where, how long.
 template <bool kWithValue>
 class PerThreadLists {
  public:
   // Runs append(i, store) for every i in [0, n), the store being that of i's
-  // share (for_each_share); append adds i's entries at its end.
+  // chunk (for_each_chunk: a particle's candidates, and so its cost, vary);
+  // append adds i's entries at its end.
   template <class Append>
   void fill(std::size_t n, std::size_t entries_per_particle, Append&& append) {
     first_.resize(n);
     count_.resize(n);
     owner_.resize(n);
     const bool use_team = worth_threads(n);
-    stores_.resize(static_cast<std::size_t>(share_count(n, use_team)));
-    for_each_share(n, use_team, [&](long share_begin, long share_end, long share) {
-      const int owner = static_cast<int>(share);
+    stores_.resize(static_cast<std::size_t>(sph::chunk_count(n, use_team)));
+    for_each_chunk(n, use_team, [&](long chunk_begin, long chunk_end, long chunk) {
+      const int owner = static_cast<int>(chunk);
       Store& store = stores_[static_cast<std::size_t>(owner)];
       store.reserve(entries_per_particle * (n / stores_.size() + 1));
       store.size = 0;
-      for (long i = share_begin; i < share_end; ++i) {
+      for (long i = chunk_begin; i < chunk_end; ++i) {
         const std::size_t begin = store.size;
         append(i, store);
         first_[i] = begin;

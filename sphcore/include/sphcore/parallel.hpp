@@ -65,13 +65,22 @@ inline std::pair<long, long> static_share(long n) {
   return {begin, begin + share};
 }
 
+namespace detail {
+// A chunked loop is cut into this many chunks per thread, whatever its
+// length: a thread that finishes its chunks takes the next (OpenMP's dynamic
+// schedule; TBB's work stealing), so a loop waits neither for the thread with
+// the heavier half of uneven work (the neighbour passes: a wall particle has
+// no pairs, a water particle dozens, unevenly spread over the indices) nor,
+// on TBB, for a thread that lost its core, beyond the chunk it holds.
+inline constexpr long kChunksPerThread = 8;
+
+inline long chunk_count(long n) {
+  return std::min(n, kChunksPerThread * omp_get_max_threads());
+}
+}  // namespace detail
+
 #if COSPH_PARALLEL_TBB
 namespace detail {
-// A loop on TBB is cut into this many chunks per thread, whatever its length:
-// a thread that finishes its chunks takes the others' (work stealing), so a
-// loop waits for a thread that lost its core only while that thread holds a
-// chunk, not for a fixed half of the loop.
-inline constexpr long kChunksPerThread = 8;
 
 // The arena of OpenMP's thread count, made anew when the count changes.
 inline tbb::task_arena& arena() {
@@ -83,10 +92,6 @@ inline tbb::task_arena& arena() {
     threads = wanted;
   }
   return run_arena;
-}
-
-inline long chunk_count(long n) {
-  return std::min(n, kChunksPerThread * omp_get_max_threads());
 }
 
 // chunk(begin, end, c) for the chunks c of [0, n), on the arena; each chunk is
@@ -153,6 +158,30 @@ void for_each_share(std::size_t n, bool use_team, Range&& range) {
 #endif
 }
 
+// How many chunks for_each_chunk cuts [0, n) into: kChunksPerThread per
+// thread of the team, or one.
+inline long chunk_count(std::size_t n, bool use_team) {
+  if (!on_team(use_team)) return 1;
+  return std::max(1L, detail::chunk_count(static_cast<long>(n)));
+}
+
+// range(begin, end, chunk) once for each chunk of [0, n), numbered from 0 to
+// chunk_count - 1, contiguous and in index order, each on whichever thread is
+// free first: for loops whose work per index is uneven. Which thread runs a
+// chunk changes nothing but the speed: a chunk's result must not depend on it.
+template <class Range>
+void for_each_chunk(std::size_t n, bool use_team, Range&& range) {
+  const long count = static_cast<long>(n);
+  if (!on_team(use_team)) return range(0L, count, 0L);
+#if COSPH_PARALLEL_TBB
+  detail::for_each_chunk(count, range);
+#else
+  const long chunks = chunk_count(n, use_team);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (long c = 0; c < chunks; ++c) range(count * c / chunks, count * (c + 1) / chunks, c);
+#endif
+}
+
 // The helpers below run `body` in one loop over a range, which both the plain
 // and the threaded path call, and flatten it: the body is inlined there, as
 // the compiler did into the loop of an omp for. Without flatten, the solid's
@@ -173,24 +202,14 @@ void parallel_for(std::size_t n, Body&& body) {
 }
 
 // body(i) for every i in [0, n), for the neighbour passes, whose bodies are
-// large: not flattened (written through parallel_for, the two pair passes ran
-// slower on large scenes), and on OpenMP a `parallel for` of the body itself,
-// whose region of one thread costs only a system call on small scenes.
+// large and whose work per index is uneven: in chunks (for_each_chunk), and
+// not flattened (written through parallel_for, the two pair passes ran slower
+// on large scenes). Without the team, a plain loop.
 template <class Body>
 void parallel_pass(std::size_t n, bool use_team, const Body& body) {
-  const long count = static_cast<long>(n);
-#if COSPH_PARALLEL_TBB
-  if (!on_team(use_team)) {
-    for (long i = 0; i < count; ++i) body(i);
-    return;
-  }
-  detail::for_each_chunk(count, [&body](long begin, long end, long) {
+  for_each_chunk(n, use_team, [&body](long begin, long end, long) {
     for (long i = begin; i < end; ++i) body(i);
   });
-#else
-#pragma omp parallel for schedule(static) if (use_team)
-  for (long i = 0; i < count; ++i) body(i);
-#endif
 }
 
 namespace detail {
