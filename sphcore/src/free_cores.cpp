@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <limits>
 #include <string>
-#include <thread>
 
 namespace sph {
 namespace {
@@ -59,12 +59,29 @@ FreeCoreMeter::FreeCoreMeter()
     : cores_(static_cast<int>(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN)))),
       last_(cpu_times_now()) {}
 
-double FreeCoreMeter::cores_left() {
-  CpuTimes now = cpu_times_now();
-  if (const double short_by = kShortestWindow - (now.wall - last_.wall); short_by > 0.0) {
-    std::this_thread::sleep_for(std::chrono::duration<double>(short_by));
-    now = cpu_times_now();
+double runnable_others(std::istream& proc_stat) {
+  std::string label;
+  double count = 0.0;
+  while (proc_stat >> label) {
+    if (label == "procs_running") return proc_stat >> count ? std::max(0.0, count - 1.0) : -1.0;
+    proc_stat.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
   }
+  return -1.0;
+}
+
+double runnable_others_now() {
+  std::ifstream stat("/proc/stat");
+  return runnable_others(stat);
+}
+
+double cores_left_now(double runnable_others, int cores) {
+  if (runnable_others < 0.0) return cores;
+  return std::clamp(cores - runnable_others, 0.0, static_cast<double>(cores));
+}
+
+double FreeCoreMeter::cores_left() {
+  const CpuTimes now = cpu_times_now();
+  if (now.wall - last_.wall < kShortestWindow) return cores_left_now(runnable_others_now(), cores_);
   const double left = cores_left_by_others(last_, now, cores_);
   last_ = now;
   return left;

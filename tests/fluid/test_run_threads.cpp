@@ -6,7 +6,9 @@
 #include <gtest/gtest.h>
 #include <omp.h>
 
+#include <chrono>
 #include <filesystem>
+#include <sstream>
 #include <string>
 
 #include "fluid_parameters.hpp"
@@ -92,6 +94,33 @@ TEST(FreeCores, TheMachinesBusyTimeLessThisProcesss) {
   EXPECT_DOUBLE_EQ(sph::cores_left_by_others(before, {12.0, 103.5, 21.5}, 2), 1.0);
   EXPECT_DOUBLE_EQ(sph::cores_left_by_others(before, {12.0, 101.5, 21.5}, 2), 2.0);
   EXPECT_DOUBLE_EQ(sph::cores_left_by_others(before, {12.0, 106.0, 20.0}, 2), 0.0);  // clamped
+}
+
+// A solver's first look, as it starts, is the threads runnable at that
+// instant: /proc/stat's procs_running less the reader itself.
+TEST(FreeCores, RunnableOthersAreProcsRunningLessTheReader) {
+  std::istringstream stat(
+      "cpu  100 0 50 1000 0 0 0 0 0 0\ncpu0 50 0 25 500 0 0 0 0 0 0\nintr 12 3 4\n"
+      "ctxt 99\nprocs_running 3\nprocs_blocked 0\n");
+  EXPECT_DOUBLE_EQ(sph::runnable_others(stat), 2.0);
+  std::istringstream without("cpu  100 0 50 1000 0 0 0 0 0 0\n");
+  EXPECT_LT(sph::runnable_others(without), 0.0);
+  EXPECT_DOUBLE_EQ(sph::cores_left_now(2.0, 2), 0.0);
+  EXPECT_DOUBLE_EQ(sph::cores_left_now(0.0, 2), 2.0);
+  EXPECT_DOUBLE_EQ(sph::cores_left_now(5.0, 2), 0.0);   // clamped
+  EXPECT_DOUBLE_EQ(sph::cores_left_now(-1.0, 2), 2.0);  // unreadable: all of them
+}
+
+// The first look does not wait for /proc/stat's CPU times to fill a window:
+// every run would start 0.1 s late.
+TEST(FreeCores, TheFirstLookDoesNotWait) {
+  sph::FreeCoreMeter meter;
+  const auto start = std::chrono::steady_clock::now();
+  const double left = meter.cores_left();
+  const double waited =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(waited, 0.5 * sph::FreeCoreMeter::kShortestWindow);
+  EXPECT_GE(left, 0.0);
 }
 
 }  // namespace

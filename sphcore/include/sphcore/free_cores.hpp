@@ -6,6 +6,8 @@
 // stalls every loop: the thread count follows the cores that are free.
 #pragma once
 
+#include <istream>
+
 namespace sph {
 
 // Seconds since some fixed point; wall time, and CPU time summed over cores.
@@ -22,10 +24,22 @@ CpuTimes cpu_times_now();
 // their CPU time per second of wall time, never below 0 nor above `cores`.
 double cores_left_by_others(const CpuTimes& earlier, const CpuTimes& later, int cores);
 
+// The threads other processes have running or ready to run at this instant:
+// /proc/stat's procs_running (every runnable thread of the machine) less the
+// one reading it. Negative when it cannot be read.
+double runnable_others(std::istream& proc_stat);
+double runnable_others_now();
+
+// The cores `runnable_others` leave, never below 0 nor above `cores`.
+double cores_left_now(double runnable_others, int cores);
+
 // Each call of cores_left(): the cores of the machine that other processes
 // left over the time since the call before (the first: since construction).
-// A window shorter than kShortestWindow is waited out: /proc/stat counts in
-// ticks of 10 ms, and two cores give 20 of them in 0.1 s.
+// /proc/stat counts CPU time in ticks of 10 ms, and two cores give only 20 of
+// them in 0.1 s: over a window shorter than kShortestWindow (a solver's first
+// look, as it starts) the meter takes the threads runnable at that instant
+// instead, and measures its next window from where this one began. Waiting
+// the window out would cost every short run 0.1 s.
 class FreeCoreMeter {
  public:
   static constexpr double kShortestWindow = 0.1;  // s
