@@ -68,7 +68,7 @@ class PerThreadLists {
     owner_.resize(n);
     const bool use_team = worth_threads(n);
     stores_.resize(static_cast<std::size_t>(sph::chunk_count(n, use_team)));
-    for_each_chunk(n, use_team, [&](long chunk_begin, long chunk_end, long chunk) {
+    sph::for_each_chunk(n, use_team, [&](long chunk_begin, long chunk_end, long chunk) {
       const int owner = static_cast<int>(chunk);
       Store& store = stores_[static_cast<std::size_t>(owner)];
       store.reserve(entries_per_particle * (n / stores_.size() + 1));
