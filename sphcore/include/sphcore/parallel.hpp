@@ -172,7 +172,7 @@ inline long chunk_count(std::size_t n, bool use_team) {
 template <class Range>
 void for_each_chunk(std::size_t n, bool use_team, Range&& range) {
   const long count = static_cast<long>(n);
-  if (!on_team(use_team)) return range(0L, count, 0L);
+  if (!on_team(use_team) || count == 0) return range(0L, count, 0L);  // one chunk, as counted
 #if COSPH_PARALLEL_TBB
   detail::for_each_chunk(count, range);
 #else
