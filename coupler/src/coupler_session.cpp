@@ -253,8 +253,8 @@ class Session {
     const SubstepChoice choice = account_for_the_solids_damping(
         {settings_.max_substeps, settings_.added_mass_ratio, settings_.stepping_reason},
         solid_damping_, peers_[kSolid].solver);
-    const bool unchanged = choice.max_substeps == settings_.max_substeps &&
-                           choice.max_window == settings_.max_window;
+    const bool unchanged =
+        choice.max_substeps == settings_.max_substeps && choice.max_window == settings_.max_window;
     if (unchanged) return;
     settings_.max_substeps = choice.max_substeps;
     settings_.max_window = choice.max_window;
