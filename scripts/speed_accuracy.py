@@ -23,7 +23,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.ticker import FormatStrFormatter  # noqa: E402
+from matplotlib.ticker import FormatStrFormatter, NullFormatter  # noqa: E402
 
 import cosph_results as cr  # noqa: E402
 
@@ -39,23 +39,31 @@ def by_scene(points):
     return scenes
 
 
-def draw(scenes, path, xlabel, legend_of=lambda name: name):
-    """One log-log panel per scene; series with the same legend share a colour
-    across panels."""
+def draw(scenes, path, xlabel, legend_of=None):
+    """One log-log panel per scene. With legend_of (series -> legend), series
+    with the same legend share a colour across panels."""
     colours = {}
     fig, axes = plt.subplots(1, len(scenes), figsize=(5.5 * len(scenes), 4.2), squeeze=False)
     for ax, (error_name, series) in zip(axes[0], scenes.items()):
+        if legend_of is None:
+            colours = {}
         for name, runs in series.items():
-            legend = legend_of(name)
+            legend = legend_of(name) if legend_of else name
             colour = colours.setdefault(legend, f"C{len(colours)}")
             ax.plot([run["wall_s"] for run in runs], [run["error"] for run in runs], "o-",
                     color=colour, label=legend)
             for run in runs:
                 ax.annotate(run["label"].split(", ")[-1], (run["wall_s"], run["error"]),
                             fontsize=7, xytext=(4, 4), textcoords="offset points")
-        ax.set(xscale="log", yscale="log", xlabel=xlabel, ylabel=error_name)
+        # "scene: error (unit)" reads as the panel's title and its axis.
+        title, _, ylabel = error_name.rpartition(": ")
+        ax.set(xscale="log", yscale="log", xlabel=xlabel, ylabel=ylabel, title=title)
         ax.yaxis.set_major_formatter(FormatStrFormatter("%g"))
-        ax.yaxis.set_minor_formatter(FormatStrFormatter("%g"))
+        low, high = ax.get_ylim()
+        # Minor labels only where the axis spans too little for major ones;
+        # over decades they overlap.
+        ax.yaxis.set_minor_formatter(FormatStrFormatter("%g") if high / low < 30 else
+                                     NullFormatter())
         ax.legend(fontsize=8)
     fig.tight_layout()
     fig.savefig(os.path.join(cr.FIGURES, path), dpi=110)
@@ -83,14 +91,13 @@ def main():
         draw(by_scene(exact), "speed_accuracy_exact.png", "wall time, one thread (s)",
              legend_of=lambda name: name.split(", ", 1)[-1])
 
-    def cpu_text(point):
-        return f"{point['cpu_s']:.3g}" if point.get("cpu_s") is not None else "-"
-
-    def wall_text(point):
-        return f"{point['wall_s']:.0f}" if point["wall_s"] >= 10 else f"{point['wall_s']:.2g}"
+    def seconds(value):
+        if value is None:
+            return "-"
+        return f"{value:.0f}" if value >= 10 else f"{value:.2g}"
 
     rows = [[point["series"], "exact" if point.get("exact") else "experiment", point["label"],
-             wall_text(point), cpu_text(point), error_text(point)]
+             seconds(point["wall_s"]), seconds(point.get("cpu_s")), error_text(point)]
             for point in sorted(points, key=lambda p: (bool(p.get("exact")), p["series"],
                                                        p["wall_s"]))]
     cr.write_table("speed_accuracy",

@@ -50,7 +50,7 @@ ACROSS = [6, 10, 16]  # particles across the thickness H
 
 def default_hourglass():
     """solid.hourglass_control's default, from the code that applies it."""
-    header = (ROOT / "solid" / "src" / "solid_parameters.hpp").read_text()
+    header = (ROOT / "solid" / "common" / "solid_parameters.hpp").read_text()
     return float(re.search(r"kDefaultHourglassControl = ([0-9.]+);", header).group(1))
 
 
