@@ -7,6 +7,7 @@ import glob
 import json
 import os
 import re
+import resource
 import subprocess
 import sys
 import time
@@ -72,6 +73,14 @@ def run_solver(command):
         sys.exit(f"{os.path.basename(str(command[0]))} failed unexpectedly "
                  f"(exit {result.returncode}):\n{result.stderr}")
     return result, wall
+
+
+def children_cpu_seconds():
+    """CPU time (user + system, s) of this script's finished child processes
+    so far: the difference across one run is that run's CPU time, which other
+    jobs on a shared machine inflate less than its wall time."""
+    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return usage.ru_utime + usage.ru_stime
 
 
 def run_or_reuse(case, out_dir, settings, reuse):

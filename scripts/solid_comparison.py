@@ -108,7 +108,7 @@ def elastic_plate_result(model):
 
 def current_default_alpha():
     """solid.hourglass_control's default, from the code that applies it."""
-    header = os.path.join(cr.REPO, "solid", "src", "solid_parameters.hpp")
+    header = os.path.join(cr.REPO, "solid", "common", "solid_parameters.hpp")
     with open(header) as f:
         return re.search(r"kDefaultHourglassControl = ([0-9.]+);", f.read()).group(1)
 

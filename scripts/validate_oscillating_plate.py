@@ -10,6 +10,8 @@ crossings, and writes
   docs/figures/oscillating_plate.png              tip_dy(t), theoretical period marked
   docs/figures/oscillating_plate_convergence.png  period error against dx / H
   docs/results/oscillating_plate.md               the table the README includes
+  docs/results/oscillating_plate_points.json      each run's wall and CPU time and
+                                                  |period error|, for scripts/speed_accuracy.py
 
 With --model total_lagrangian it runs build/bin/cosph-solid-tl instead, once
 per hourglass-control coefficient of --hourglass (the first is the one
@@ -48,7 +50,7 @@ ACROSS = [6, 10, 16]  # particles across the thickness H
 
 def default_hourglass():
     """solid.hourglass_control's default, from the code that applies it."""
-    header = (ROOT / "solid" / "src" / "solid_parameters.hpp").read_text()
+    header = (ROOT / "solid" / "common" / "solid_parameters.hpp").read_text()
     return float(re.search(r"kDefaultHourglassControl = ([0-9.]+);", header).group(1))
 
 
@@ -133,19 +135,22 @@ def run(across, out_dir, end_time, solver, model, alpha=None, gradient=None):
     if end_time:
         command += ["--set", f"run.end_time={end_time}"]
     print("running:", " ".join(command), flush=True)
-    wall_file = out / "wall_time.txt"
+    wall_file, cpu_file = out / "wall_time.txt", out / "cpu_time.txt"
     if REUSE and wall_file.exists():
         print("reusing:", out, flush=True)
         wall = float(wall_file.read_text())
+        cpu = float(cpu_file.read_text()) if cpu_file.exists() else None
     else:
-        start = time.monotonic()
+        start, cpu_start = time.monotonic(), cr.children_cpu_seconds()
         subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
-        wall = time.monotonic() - start
+        wall, cpu = time.monotonic() - start, cr.children_cpu_seconds() - cpu_start
         wall_file.write_text(f"{wall}\n")
+        cpu_file.write_text(f"{cpu}\n")
     series = read_timeseries(out / "timeseries.csv")
     with open(out / "solid.xdmf") as f:
         particles = int(f.read().split('Dimensions="')[1].split()[0])
-    return {"across": across, "dx": dx, "series": series, "wall": wall, "particles": particles,
+    return {"across": across, "dx": dx, "series": series, "wall": wall, "cpu": cpu,
+            "particles": particles,
             "alpha": alpha, "gradient": gradient,
             "T": measured_period(series["t"], series["tip_dy"])}
 
@@ -210,25 +215,42 @@ def plot_convergence(series, T_theory, path):
     fig.savefig(path, dpi=120)
 
 
+def cpu_text(result):
+    """The run's CPU time, or '-' for a reused run from before they were recorded."""
+    return "-" if result["cpu"] is None else f"{result['cpu']:.0f}"
+
+
+def write_points(name, series, T_theory):
+    """docs/results/NAME_points.json for scripts/speed_accuracy.py; series:
+    (label, results) pairs. The reference, thin-plate theory, is exact."""
+    cr.write_points(name, [
+        {"series": f"oscillating plate, {label}", "label": f"{r['across']} across",
+         "wall_s": r["wall"], "cpu_s": r["cpu"], "error": 100 * abs(r["T"] / T_theory - 1),
+         "error_name": "oscillating plate: |period error| vs thin-plate theory (%)",
+         "exact": True}
+        for label, results in series for r in results])
+
+
 def write_table(results, T_theory, path):
     """The Jaumann solid's table (docs/results/oscillating_plate.md)."""
     lines = [
         "| velocity gradient | particles across H | dx [mm] | particles | period T [s] "
-        "| error vs theory | wall time [s] |",
-        "|---|---:|---:|---:|---:|---:|---:|",
+        "| error vs theory | wall time [s] | CPU time [s] |",
+        "|---|---:|---:|---:|---:|---:|---:|---:|",
     ]
     for r in results:
         lines.append(f"| {r['gradient']} | {r['across']} | {1e3 * r['dx']:.3f} | {r['particles']} | "
-                     f"{r['T']:.4f} | {100 * (r['T'] / T_theory - 1):+.1f} % | {r['wall']:.0f} |")
+                     f"{r['T']:.4f} | {100 * (r['T'] / T_theory - 1):+.1f} % | {r['wall']:.0f} "
+                     f"| {cpu_text(r)} |")
     text = ("Oscillating plate (Gray, Monaghan & Swift 2001): period of the free end against "
             f"thin-plate theory T = {T_theory:.4f} s, written by "
             "`scripts/validate_oscillating_plate.py` (one thread each).\n\n"
             + "\n".join(lines) + "\n\n"
             "Wall times are for one thread each on a shared two-core machine, so other jobs "
-            "running at the same time inflate them. The case runs 16 particles across with "
-            "the quadratic velocity gradient (its own choice: the solver's default is the "
-            "linear one, which large deformations need). The error falls with resolution at about "
-            "first order in dx/H: near the free surfaces the SPH plate is softer than "
+            "running at the same time inflate them; CPU times much less. The case runs 16 "
+            "particles across with the quadratic velocity gradient (its own choice: the "
+            "solver's default is the linear one, which large deformations need). The error "
+            "falls with resolution at about first order in dx/H: near the free surfaces the SPH plate is softer than "
             "thin-plate theory. Part of that is the strain read at the surface particles: a "
             "bending displacement is quadratic (u_x = -kappa x y), and the renormalised "
             "(linear-exact) gradient, with its one-sided neighbourhood there, reads the strain "
@@ -247,12 +269,13 @@ def write_table_tl(results, large, T_theory, path):
     """The total-Lagrangian solid's table (docs/results/oscillating_plate_tl.md)."""
     lines = [
         "| hourglass alpha | particles across H | dx [mm] | particles | period T [s] "
-        "| error vs theory | wall time [s] |",
-        "|---:|---:|---:|---:|---:|---:|---:|",
+        "| error vs theory | wall time [s] | CPU time [s] |",
+        "|---:|---:|---:|---:|---:|---:|---:|---:|",
     ]
     for r in results:
         lines.append(f"| {r['alpha']:g} | {r['across']} | {1e3 * r['dx']:.3f} | {r['particles']} | "
-                     f"{r['T']:.4f} | {100 * (r['T'] / T_theory - 1):+.1f} % | {r['wall']:.0f} |")
+                     f"{r['T']:.4f} | {100 * (r['T'] / T_theory - 1):+.1f} % | {r['wall']:.0f} "
+                     f"| {cpu_text(r)} |")
     outcome = (f"stopped at t = {large['t_end']:.3f} s: {large['error']}" if large["error"] else
                f"reached t = {large['end_time']} s; in the last snapshot the plate is "
                f"{'whole' if large['pieces'] == 1 else 'in %d pieces' % large['pieces']} "
@@ -282,7 +305,7 @@ def write_table_tl(results, large, T_theory, path):
             f"{large['across']} across): "
             f"{outcome}.\n\n"
             "Wall times are for one thread each on a shared two-core machine, so other jobs "
-            "running at the same time inflate them.\n")
+            "running at the same time inflate them; CPU times much less.\n")
     path.write_text(text)
     print(text)
 
@@ -325,6 +348,9 @@ def main():
                          figures / "oscillating_plate_convergence.png")
         write_table([r for results in by_gradient for r in results], T_theory,
                     docs / "oscillating_plate.md")
+        write_points("oscillating_plate",
+                     [(f"Jaumann, {gradient} gradient", results)
+                      for gradient, results in zip(VELOCITY_GRADIENTS, by_gradient)], T_theory)
         return
     by_alpha = [[run(across, out_dir, args.end_time, solver, args.model, alpha)
                  for across in ACROSS] for alpha in args.hourglass]
@@ -336,6 +362,9 @@ def main():
                      figures / "oscillating_plate_tl_convergence.png")
     write_table_tl([r for results in by_alpha for r in results], large, T_theory,
                    docs / "oscillating_plate_tl.md")
+    write_points("oscillating_plate_tl", [(f"total-Lagrangian, alpha {alpha:g}", results)
+                                          for alpha, results in zip(args.hourglass, by_alpha)],
+                 T_theory)
 
 
 if __name__ == "__main__":

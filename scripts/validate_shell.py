@@ -11,7 +11,9 @@ about three periods) is compared with two references:
   - the Timoshenko beam the shell discretises (shear correction 5/6 and
     rotary inertia), its first root found here by shooting: the limit the
     shell must converge to.
-Writes docs/results/shell.md and docs/figures/shell_period.png.
+Writes docs/results/shell.md and docs/figures/shell_period.png, and each
+run's wall and CPU time and |period error| against Timoshenko to
+docs/results/plate_in_vacuum_shell_points.json for scripts/speed_accuracy.py.
 
 usage: scripts/validate_shell.py [--bin DIR]
 """
@@ -21,12 +23,15 @@ import pathlib
 import subprocess
 import sys
 import tempfile
+import time
 
 import numpy as np
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+import cosph_results as cr  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 CASE = ROOT / "cases" / "shell_plate.pbtxt"
@@ -97,14 +102,34 @@ def run(binary, n, out):
     command = [str(binary), "--case", str(CASE), "--out", str(out)]
     for s in settings:
         command += ["--set", s]
+    start, cpu_start = time.monotonic(), cr.children_cpu_seconds()
     subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
-    data = np.genfromtxt(out / "timeseries.csv", delimiter=",", names=True)
+    wall, cpu = time.monotonic() - start, cr.children_cpu_seconds() - cpu_start
+    period, t, y = tip_period(out / "timeseries.csv", f"n = {n}")
+    return period, t, y, wall, cpu
+
+
+def tip_period(timeseries, name):
+    """The free end's period (mean time between downward zero crossings of
+    tip_dy), with the time series t and tip_dy it was read from."""
+    data = np.genfromtxt(timeseries, delimiter=",", names=True)
     t, y = data["t_s"], data["tip_dy_m"]
     down = np.where((y[:-1] > 0) & (y[1:] <= 0))[0]
     crossings = t[down] + (t[down + 1] - t[down]) * y[down] / (y[down] - y[down + 1])
     if len(crossings) < 2:
-        sys.exit(f"n = {n}: fewer than two downward crossings of tip_dy")
+        sys.exit(f"{name}: fewer than two downward crossings of tip_dy")
     return float(np.mean(np.diff(crossings))), t, y
+
+
+ERROR_NAME = "plate in vacuum: |period error| vs Timoshenko (%)"
+
+
+def period_point(series, label, period, T_timoshenko, wall, cpu):
+    """A run of the plate in vacuum for scripts/speed_accuracy.py: its exact
+    reference is the Timoshenko beam's period."""
+    return {"series": f"plate in vacuum, {series}", "label": label, "wall_s": wall,
+            "cpu_s": cpu, "error": 100 * abs(period / T_timoshenko - 1),
+            "error_name": ERROR_NAME, "exact": True}
 
 
 def main():
@@ -118,8 +143,8 @@ def main():
     with tempfile.TemporaryDirectory() as folder:
         for n in RESOLUTIONS:
             out = pathlib.Path(folder) / f"n{n}"
-            period, t, y = run(binary, n, out)
-            rows.append((n, period))
+            period, t, y, wall, cpu = run(binary, n, out)
+            rows.append((n, period, wall, cpu))
             ax.plot(t, y * 1000, label=f"{n} along")
     ax.set_xlabel("t [s]")
     ax.set_ylabel("tip deflection [mm]")
@@ -134,15 +159,21 @@ def main():
              f"against Euler-Bernoulli in plane strain, T = {T_eb:.5f} s, and against the "
              f"Timoshenko beam (shear correction 5/6, rotary inertia), T = {T_timoshenko:.5f} s "
              f"({100 * (T_timoshenko / T_eb - 1):+.2f} %), the limit the shell converges to.", "",
-             "| particles along L | period [s] | vs Euler-Bernoulli | vs Timoshenko |",
-             "|---:|---:|---:|---:|"]
-    for n, period in rows:
+             "| particles along L | period [s] | vs Euler-Bernoulli | vs Timoshenko "
+             "| wall time [s] | CPU time [s] |",
+             "|---:|---:|---:|---:|---:|---:|"]
+    for n, period, wall, cpu in rows:
         lines.append(f"| {n} | {period:.5f} | {100 * (period / T_eb - 1):+.2f} % "
-                     f"| {100 * (period / T_timoshenko - 1):+.2f} % |")
-    lines.append("")
+                     f"| {100 * (period / T_timoshenko - 1):+.2f} % | {wall:.2f} | {cpu:.2f} |")
+    lines += ["", "Wall and CPU times are for one thread each on a shared two-core machine; "
+              "other jobs running at the same time inflate the wall time more than the CPU time.",
+              ""]
     table = ROOT / "docs" / "results" / "shell.md"
     table.write_text("\n".join(lines))
     print("\n".join(lines))
+    cr.write_points("plate_in_vacuum_shell", [
+        period_point("shell", f"{n} along", period, T_timoshenko, wall, cpu)
+        for n, period, wall, cpu in rows])
 
 
 if __name__ == "__main__":
