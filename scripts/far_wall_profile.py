@@ -18,7 +18,7 @@ asks where along the wall the pressure differs, and why, on the dam break at
     by which the momentum equation's pair sum turns a pressure into force on
     the wall (sum of V_i V_j dW/dx over the wall's and the water's
     particles, per unit height: 0.5 for water filling the half-space), which
-    grows where the water particles lie closer to the wall.
+    grows where the water particles lie closer to the wall or denser.
 Writes docs/results/far_wall_profile.md and docs/figures/far_wall_profile.png.
 
 usage: /usr/bin/python3 scripts/far_wall_profile.py [--out DIR] [--reuse]
