@@ -61,13 +61,17 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
       const double rho_j = P.rho[j], V_j = P.volume[j];
       const Vec2 v_ij = v_i - P.v[j];
       drho_i += sph::continuity_pair(rho_i, V_j, v_ij, grad_W_ij);
-      // The Riemann problem is solved against the walls too, with their
-      // extrapolated pressure (of the last force evaluation): left out, the
-      // water by a wall would lose density to the water above it with
-      // nothing flowing back from below.
-      if (par.dissipation == Dissipation::riemann)
-        drho_i += riemann_density_dissipation_pair(rho_i, V_j, P.p[i], P.p[j], F[k], x_ij,
-                                                   inverse_rho0_c0);
+      // The Riemann problem is solved against the walls too, the wall's side
+      // mirroring i (riemann_wall_pressure): left out, the water by a wall
+      // would lose density to the water above it with nothing flowing back
+      // from below.
+      if (par.dissipation == Dissipation::riemann) {
+        const double P_j = P.is_water(j) ? P.p[j]
+                                         : riemann_wall_pressure(
+                                               P.p[i], rho_i, par.run.gravity - P.wall_a[j], x_ij);
+        drho_i +=
+            riemann_density_dissipation_pair(rho_i, V_j, P.p[i], P_j, F[k], x_ij, inverse_rho0_c0);
+      }
       if (!P.is_water(j)) {
         wall_in_reach = true;
         continue;

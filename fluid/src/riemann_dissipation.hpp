@@ -33,6 +33,22 @@ inline double riemann_density_dissipation_pair(double rho_i, double V_j, double 
   return rho_i * V_j * (P_i - P_j) * inverse_rho0_c0 * F_ij * x_ij.norm();
 }
 
+// The pressure of a wall particle j on the wall's side of water particle i's
+// Riemann problem: i's own pressure carried hydrostatically to j,
+//   P_j = P_i + rho_i (g - a_w) . (x_j - x_i),
+// the one-sided Riemann problem of the paper's wall condition (the wall
+// mirrors the water particle), as SPHinXsys solves it against walls
+// (p_j_in_wall in fluid_integration.hpp; it also drops the term where
+// (g - a_w) points away from the wall, kept here linear as Adami's
+// extrapolation is). Not the wall's extrapolated pressure, a kernel mean of the
+// water within 2h: where the pressure rises towards a wall (a flow stagnating
+// on it) that mean lies below the pressure of the water next to the wall, and
+// the water there would lose density into the wall, which gives none back.
+inline double riemann_wall_pressure(double P_i, double rho_i, const Vec2& body_force,
+                                    const Vec2& x_ij) {
+  return P_i - rho_i * body_force.dot(x_ij);
+}
+
 // Momentum's dissipative part as the Pi_ij of the pair's bracket
 // (momentum_bracket.hpp: ((sigma_i + sigma_j) / (rho_i rho_j) - Pi_ij I) . grad_i W_ij):
 // the paper's P* in place of (P_i + P_j) / 2 adds
