@@ -8,12 +8,30 @@
 //              equations (riemann_dissipation.hpp), no artificial viscosity.
 #pragma once
 
+#include <type_traits>
+
 #include "riemann_dissipation.hpp"
 #include "sphcore/artificial_viscosity.hpp"
 
 namespace cosph::fluid {
 
 enum class Dissipation { delta_sph, fourtakas, riemann };
+
+// f(std::integral_constant<Dissipation, d>{}) for the run's dissipation d: a
+// pass written once and compiled for each, so that its pair loop holds only
+// the chosen one's terms.
+template <class F>
+decltype(auto) with_dissipation(Dissipation dissipation, F&& f) {
+  switch (dissipation) {
+    case Dissipation::fourtakas:
+      return f(std::integral_constant<Dissipation, Dissipation::fourtakas>{});
+    case Dissipation::riemann:
+      return f(std::integral_constant<Dissipation, Dissipation::riemann>{});
+    case Dissipation::delta_sph:
+      break;
+  }
+  return f(std::integral_constant<Dissipation, Dissipation::delta_sph>{});
+}
 
 // The Pi_ij of the momentum bracket for the chosen dissipation: Monaghan's
 // artificial viscosity or the Riemann solver's limited dissipation. The

@@ -44,59 +44,60 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
   const bool threaded = sph::worth_threads(P.size());
   sph::parallel_pass(n, threaded, [&](long i) { P.volume[i] = P.m[i] / P.rho[i]; });
 
-  sph::parallel_pass(n, threaded, [&](long i) {
-    if (!P.is_water(i)) return;
-    const Vec2 x_i = P.x[i], v_i = P.v[i], grad_rho_i = P.grad_rho[i];
-    const double rho_i = P.rho[i];
-    sph::GradientSums sums;
-    Vec2 grad_rho_raw = Vec2::Zero();
-    double drho_i = 0.0, diffusion_i = 0.0;
-    bool wall_in_reach = false;
-    const auto neighbours = pairs.neighbours(i);
-    const auto F = pairs.gradient_factors(i);
-    for (std::size_t k = 0; k < neighbours.size(); ++k) {
-      const int j = neighbours[k];
-      const Vec2 x_ij = x_i - P.x[j];
-      const Vec2 grad_W_ij = F[k] * x_ij;
-      const double rho_j = P.rho[j], V_j = P.volume[j];
-      const Vec2 v_ij = v_i - P.v[j];
-      drho_i += sph::continuity_pair(rho_i, V_j, v_ij, grad_W_ij);
-      // The Riemann problem is solved against the walls too, the wall's side
-      // mirroring i (riemann_wall_pressure): left out, the water by a wall
-      // would lose density to the water above it with nothing flowing back
-      // from below.
-      if (par.dissipation == Dissipation::riemann) {
-        const double P_j = P.is_water(j) ? P.p[j]
-                                         : riemann_wall_pressure(
-                                               P.p[i], rho_i, par.run.gravity - P.wall_a[j], x_ij);
-        drho_i +=
-            riemann_density_dissipation_pair(rho_i, V_j, P.p[i], P_j, F[k], x_ij, inverse_rho0_c0);
-      }
-      if (!P.is_water(j)) {
-        wall_in_reach = true;
-        continue;
-      }
-      switch (par.dissipation) {
-        case Dissipation::delta_sph:
+  // The dissipation is chosen once for the whole pass, at compile time, so
+  // that the pair loop holds only its terms: with a run-time branch there the
+  // default's pass paid for the Riemann wall term it never takes.
+  with_dissipation(par.dissipation, [&](auto dissipation) {
+    sph::parallel_pass(n, threaded, [&](long i) {
+      if (!P.is_water(i)) return;
+      const Vec2 x_i = P.x[i], v_i = P.v[i], grad_rho_i = P.grad_rho[i];
+      const double rho_i = P.rho[i];
+      sph::GradientSums sums;
+      Vec2 grad_rho_raw = Vec2::Zero();
+      double drho_i = 0.0, diffusion_i = 0.0;
+      bool wall_in_reach = false;
+      const auto neighbours = pairs.neighbours(i);
+      const auto F = pairs.gradient_factors(i);
+      for (std::size_t k = 0; k < neighbours.size(); ++k) {
+        const int j = neighbours[k];
+        const Vec2 x_ij = x_i - P.x[j];
+        const Vec2 grad_W_ij = F[k] * x_ij;
+        const double rho_j = P.rho[j], V_j = P.volume[j];
+        const Vec2 v_ij = v_i - P.v[j];
+        drho_i += sph::continuity_pair(rho_i, V_j, v_ij, grad_W_ij);
+        // The Riemann problem is solved against the walls too, the wall's side
+        // mirroring i (riemann_wall_pressure): left out, the water by a wall
+        // would lose density to the water above it with nothing flowing back
+        // from below.
+        if constexpr (dissipation == Dissipation::riemann) {
+          const double P_j =
+              P.is_water(j)
+                  ? P.p[j]
+                  : riemann_wall_pressure(P.p[i], rho_i, par.run.gravity - P.wall_a[j], x_ij);
+          drho_i += riemann_density_dissipation_pair(rho_i, V_j, P.p[i], P_j, F[k], x_ij,
+                                                     inverse_rho0_c0);
+        }
+        if (!P.is_water(j)) {
+          wall_in_reach = true;
+          continue;
+        }
+        if constexpr (dissipation == Dissipation::delta_sph)
           diffusion_i +=
               density_diffusion_pair(rho_i, rho_j, F[k], grad_rho_i, P.grad_rho[j], V_j, grad_W_ij);
-          break;
-        case Dissipation::fourtakas:
+        if constexpr (dissipation == Dissipation::fourtakas)
           diffusion_i +=
               hydrostatic_density_diffusion_pair(rho_i, rho_j, rho_hydrostatic(x_ij), F[k], V_j);
-          break;
-        case Dissipation::riemann:  // above, with the walls
-          break;
+        // Riemann: above, with the walls.
+        const Vec2 Vg = V_j * grad_W_ij;
+        sums.add(Vg, x_ij, v_ij);
+        grad_rho_raw += (rho_j - rho_i) * Vg;
       }
-      const Vec2 Vg = V_j * grad_W_ij;
-      sums.add(Vg, x_ij, v_ij);
-      grad_rho_raw += (rho_j - rho_i) * Vg;
-    }
-    const sph::RenormalisedGradient gradient = sph::renormalised_gradient(sums);
-    P.drho[i] = drho_i + diffusion * diffusion_i;
-    P.spray[i] = !wall_in_reach && !gradient.renormalised;
-    P.grad_rho_next[i] = gradient.L * grad_rho_raw;
-    P.tau[i] = viscous_stress(par.mu, gradient.grad_v);
+      const sph::RenormalisedGradient gradient = sph::renormalised_gradient(sums);
+      P.drho[i] = drho_i + diffusion * diffusion_i;
+      P.spray[i] = !wall_in_reach && !gradient.renormalised;
+      P.grad_rho_next[i] = gradient.L * grad_rho_raw;
+      P.tau[i] = viscous_stress(par.mu, gradient.grad_v);
+    });
   });
   P.grad_rho.swap(P.grad_rho_next);
 }
