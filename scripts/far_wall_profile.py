@@ -59,17 +59,8 @@ GAIN_BAND = (0.008, 0.072)  # m: the wall particles whose pair sum's factor is t
 
 def wall_profile(snapshot, kernel, h):
     """The sensor's formula at each of HEIGHTS on the far wall, in Pa."""
-    water = snapshot["kind"][:] == ss.WATER
-    x = snapshot["position"][:, :2][water]
-    p, rho = snapshot["pressure"][:][water], snapshot["density"][:][water]
-    profile = []
-    for y in HEIGHTS:
-        offset = np.array([FAR_WALL_X, y]) - x
-        w = ss.kernel_weight(np.linalg.norm(offset, axis=1) / h, kernel)
-        total = np.sum(w)
-        profile.append((np.sum(p * w) + np.sum(rho * w * -dam.G * offset[:, 1])) / total
-                       if total > 0 else 0.0)
-    return np.array(profile)
+    water = ss.water_state(snapshot)
+    return np.array([ss.sensor_reading(water, (FAR_WALL_X, y), kernel, h) for y in HEIGHTS])
 
 
 def velocity_profile(snapshot):
@@ -150,13 +141,7 @@ def main():
     rows = []
     for n, (key, label, settings, kernel, h_factor) in enumerate(RUNS):
         folder = os.path.join(args.out, key)
-        os.makedirs(folder, exist_ok=True)
-        if not (args.reuse and os.path.exists(os.path.join(folder, "timeseries.csv"))):
-            cr.run_case("dam_break", folder, settings + [
-                f"fluid.spacing={SPACING}", f"run.output_interval={dam.OUTPUT_INTERVAL}",
-                f"run.snapshot_interval={SNAPSHOT_INTERVAL}",
-                f"run.end_time={dam.AFTER_IMPACT[1] + 0.01}"])
-        series = cr.read_csv(os.path.join(folder, "timeseries.csv"))
+        series = ss.run_after_impact(folder, settings, SPACING, SNAPSHOT_INTERVAL, args.reuse)
         profile, u, layer_u, gain, count = measure(folder, kernel, h_factor * SPACING)
         print(key, count, "snapshots", flush=True)
         centres = 0.5 * (HEIGHT_BINS[1:] + HEIGHT_BINS[:-1])

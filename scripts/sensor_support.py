@@ -40,7 +40,16 @@ import validate_dam_break as dam
 
 SPACING = 0.004
 ALPHA = 0.02  # the case's fluid.artificial_viscosity
-PROBE = np.array([0.576, 0.016])  # probe1, cases/dam_break.pbtxt
+
+
+def case_probe(index):
+    """The case's pressure sensor `index` (cases/dam_break.pbtxt, pressure_probes), in m."""
+    with open(os.path.join(cr.REPO, "cases", "dam_break.pbtxt")) as case:
+        probes = re.findall(r"pressure_probes\s*\{\s*x:\s*(\S+)\s+y:\s*(\S+)\s*\}", case.read())
+    return np.array([float(value) for value in probes[index]])
+
+
+PROBE = case_probe(1)  # probe1, on the far wall
 RUNS = [  # (key, label, settings)
     ("default", "delta-SPH, cubic spline, h = 1.3 dx (the default)", []),
     ("wendland_2dx", "delta-SPH, Wendland C2, h = 2 dx", pn.WENDLAND_2DX),
@@ -72,14 +81,35 @@ def kernel_weight(q, kernel):
     return np.where(q < 2, (1 - q / 2) ** 4 * (2 * q + 1), 0.0)
 
 
-def sensor(snapshot, kernel, h):
-    """The sensor's reading on a snapshot, as gauges.cpp computes it, in Pa."""
+def water_state(snapshot):
+    """The water's positions, pressures and densities in a snapshot, read once."""
     water = snapshot["kind"][:] == WATER
-    x = snapshot["position"][:, :2][water]
-    p, rho = snapshot["pressure"][:][water], snapshot["density"][:][water]
-    offset = PROBE - x
+    return (snapshot["position"][:, :2][water], snapshot["pressure"][:][water],
+            snapshot["density"][:][water])
+
+
+def sensor_reading(water, point, kernel, h):
+    """A sensor at `point` on the water (water_state) as gauges.cpp computes it,
+    in Pa: the kernel mean of the water's pressure, corrected hydrostatically
+    to the point; 0 with no water in reach."""
+    x, p, rho = water
+    offset = np.asarray(point) - x
     w = kernel_weight(np.linalg.norm(offset, axis=1) / h, kernel)
-    return (np.sum(p * w) + np.sum(rho * w * -dam.G * offset[:, 1])) / np.sum(w)
+    total = np.sum(w)
+    return (np.sum(p * w) + np.sum(rho * w * -dam.G * offset[:, 1])) / total if total > 0 else 0.0
+
+
+def run_after_impact(folder, settings, spacing, snapshot_interval, reuse):
+    """The dam break at `spacing` into `folder`, run to just past the window
+    after the impact with a snapshot every `snapshot_interval` (kept as it is
+    with `reuse`, if there); returns its timeseries."""
+    os.makedirs(folder, exist_ok=True)
+    if not (reuse and os.path.exists(os.path.join(folder, "timeseries.csv"))):
+        cr.run_case("dam_break", folder, settings + [
+            f"fluid.spacing={spacing}", f"run.output_interval={dam.OUTPUT_INTERVAL}",
+            f"run.snapshot_interval={snapshot_interval}",
+            f"run.end_time={dam.AFTER_IMPACT[1] + 0.01}"])
+    return cr.read_csv(os.path.join(folder, "timeseries.csv"))
 
 
 def snapshots(folder):
@@ -98,11 +128,11 @@ def measure(folder):
     counts = np.zeros(len(DISTANCE_BINS) - 1)
     u, dynamic = [], []
     for snapshot in snapshots(folder):
+        water_now = water_state(snapshot)
         for reading, (_, kernel, h) in zip(readings, SUPPORTS):
-            reading.append(sensor(snapshot, kernel, h))
+            reading.append(sensor_reading(water_now, PROBE, kernel, h))
+        x, p, rho = water_now
         water = snapshot["kind"][:] == WATER
-        x = snapshot["position"][:, :2][water]
-        p, rho = snapshot["pressure"][:][water], snapshot["density"][:][water]
         band = (x[:, 1] > BESIDE_WALL[0]) & (x[:, 1] < BESIDE_WALL[1])
         corrected = p[band] + rho[band] * dam.G * (x[band, 1] - PROBE[1])
         k = np.digitize(PROBE[0] - x[band, 0], DISTANCE_BINS) - 1
@@ -128,13 +158,7 @@ def main():
     rows = []
     for key, label, settings in RUNS:
         folder = os.path.join(args.out, key)
-        os.makedirs(folder, exist_ok=True)
-        if not (args.reuse and os.path.exists(os.path.join(folder, "timeseries.csv"))):
-            cr.run_case("dam_break", folder, settings + [
-                f"fluid.spacing={SPACING}", f"run.output_interval={dam.OUTPUT_INTERVAL}",
-                f"run.snapshot_interval={SNAPSHOT_INTERVAL}",
-                f"run.end_time={dam.AFTER_IMPACT[1] + 0.01}"])
-        series = cr.read_csv(os.path.join(folder, "timeseries.csv"))
+        series = run_after_impact(folder, settings, SPACING, SNAPSHOT_INTERVAL, args.reuse)
         readings, profile, u, dynamic, count = measure(folder)
         rows.append([label, f"{dam.sensor_noise(series, 'probe1')[0]:.3f}",
                      *(f"{value:.3f}" for value in readings),

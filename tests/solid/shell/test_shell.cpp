@@ -308,7 +308,7 @@ TEST(Shell, DampingStopsTheShearRotationMode) {
 // The Hello's fastest mode (coupling.proto, fastest_mode_*): the shear-rotation
 // cut-off and the damping ratio of the Kelvin-Voigt rule there, whose
 // zeta / omega = eta_s / (2 G) is the least of the shell's (the normal
-// rates' is eta_n / (2 E')); the coupler's window bound is 4 zeta / omega.
+// rates' is eta_n / (2 E')); the coupler's window bound is 2 zeta / omega.
 TEST(Shell, StatesItsFastestModeAndItsDamping) {
   const ShellSolver solver = solver_of(plate_case("shell_fastest", 32));
   const ShellSection& section = solver.force_parameters().section;
