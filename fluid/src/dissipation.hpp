@@ -33,22 +33,23 @@ decltype(auto) with_dissipation(Dissipation dissipation, F&& f) {
   return f(std::integral_constant<Dissipation, Dissipation::delta_sph>{});
 }
 
-// The Pi_ij of the momentum bracket for the chosen dissipation: Monaghan's
-// artificial viscosity or the Riemann solver's limited dissipation. The
-// choice is the same for every pair, so the branch costs next to nothing.
+// The Pi_ij of the momentum bracket for dissipation d: Monaghan's artificial
+// viscosity or the Riemann solver's limited dissipation, chosen at compile
+// time with the pass (with_dissipation).
+template <Dissipation d>
 class MomentumDissipation {
  public:
-  MomentumDissipation(Dissipation dissipation, double h, double c0, double A, double B)
-      : riemann_(dissipation == Dissipation::riemann),
-        monaghan_(h, c0, A, B),
-        riemann_limited_(c0) {}
+  MomentumDissipation(double h, double c0, double A, double B)
+      : monaghan_(h, c0, A, B), riemann_limited_(c0) {}
 
   double operator()(const Vec2& x_ij, const Vec2& v_ij, double rho_bar) const {
-    return riemann_ ? riemann_limited_(x_ij, v_ij, rho_bar) : monaghan_(x_ij, v_ij, rho_bar);
+    if constexpr (d == Dissipation::riemann)
+      return riemann_limited_(x_ij, v_ij, rho_bar);
+    else
+      return monaghan_(x_ij, v_ij, rho_bar);
   }
 
  private:
-  bool riemann_;
   sph::UniformArtificialViscosity monaghan_;
   RiemannLimitedDissipation riemann_limited_;
 };

@@ -187,42 +187,44 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
     const auto neighbours = pairs.neighbours(i);
     return neighbours.empty() ? i : neighbours.back();
   });
-  const MomentumDissipation Pi_of(par.dissipation, par.h, par.c0, par.A, par.B);
-  sph::parallel_pass(blocks, threaded, [&](long b) {
-    for (long i = shares.begin(b); i < shares.end(b); ++i) P.a[i].setZero();
-    for (long i = shares.begin(b); i < shares.end(b); ++i) {
-      if (!P.is_water(i)) continue;
-      const Vec2 x_i = P.x[i], v_i = P.v[i];
-      const double m_i = P.m[i], rho_i = P.rho[i], inverse_rho_i = P.inverse_rho[i];
-      const SymmetricStress sigma_i = P.sigma[i];
-      const auto bracket_times_gradient_of = [&](int j, double F_ij) {
-        const Vec2 x_ij = x_i - P.x[j];
-        const double Pi_ij = Pi_of(x_ij, v_i - P.v[j], 0.5 * (rho_i + P.rho[j]));
-        return sph::bracket_times_gradient(sigma_i, P.sigma[j], inverse_rho_i, P.inverse_rho[j],
-                                           Pi_ij, F_ij * x_ij);
-      };
-      const auto neighbours = pairs.neighbours(i);
-      const auto F = pairs.gradient_factors(i);
-      const std::size_t later = static_cast<std::size_t>(
-          std::upper_bound(neighbours.begin(), neighbours.end(), static_cast<int>(i)) -
-          neighbours.begin());
-      Vec2 a_i = Vec2::Zero();
-      // The water before i has given i its share already; its walls have not.
-      for (std::size_t k = 0; k < later; ++k) {
-        const int j = neighbours[k];
-        if (P.is_water(j)) continue;
-        a_i += P.m[j] * bracket_times_gradient_of(j, F[k]);
+  with_dissipation(par.dissipation, [&](auto dissipation) {
+    const MomentumDissipation<dissipation> Pi_of(par.h, par.c0, par.A, par.B);
+    sph::parallel_pass(blocks, threaded, [&](long b) {
+      for (long i = shares.begin(b); i < shares.end(b); ++i) P.a[i].setZero();
+      for (long i = shares.begin(b); i < shares.end(b); ++i) {
+        if (!P.is_water(i)) continue;
+        const Vec2 x_i = P.x[i], v_i = P.v[i];
+        const double m_i = P.m[i], rho_i = P.rho[i], inverse_rho_i = P.inverse_rho[i];
+        const SymmetricStress sigma_i = P.sigma[i];
+        const auto bracket_times_gradient_of = [&](int j, double F_ij) {
+          const Vec2 x_ij = x_i - P.x[j];
+          const double Pi_ij = Pi_of(x_ij, v_i - P.v[j], 0.5 * (rho_i + P.rho[j]));
+          return sph::bracket_times_gradient(sigma_i, P.sigma[j], inverse_rho_i, P.inverse_rho[j],
+                                             Pi_ij, F_ij * x_ij);
+        };
+        const auto neighbours = pairs.neighbours(i);
+        const auto F = pairs.gradient_factors(i);
+        const std::size_t later = static_cast<std::size_t>(
+            std::upper_bound(neighbours.begin(), neighbours.end(), static_cast<int>(i)) -
+            neighbours.begin());
+        Vec2 a_i = Vec2::Zero();
+        // The water before i has given i its share already; its walls have not.
+        for (std::size_t k = 0; k < later; ++k) {
+          const int j = neighbours[k];
+          if (P.is_water(j)) continue;
+          a_i += P.m[j] * bracket_times_gradient_of(j, F[k]);
+        }
+        // A later wall is sent a share too, which nothing reads: cheaper than
+        // telling walls apart here.
+        for (std::size_t k = later; k < neighbours.size(); ++k) {
+          const int j = neighbours[k];
+          const Vec2 bracket_times_gradient_ij = bracket_times_gradient_of(j, F[k]);
+          a_i += P.m[j] * bracket_times_gradient_ij;
+          shares.share(b, P.a.data(), j) -= m_i * bracket_times_gradient_ij;
+        }
+        P.a[i] += a_i;
       }
-      // A later wall is sent a share too, which nothing reads: cheaper than
-      // telling walls apart here.
-      for (std::size_t k = later; k < neighbours.size(); ++k) {
-        const int j = neighbours[k];
-        const Vec2 bracket_times_gradient_ij = bracket_times_gradient_of(j, F[k]);
-        a_i += P.m[j] * bracket_times_gradient_ij;
-        shares.share(b, P.a.data(), j) -= m_i * bracket_times_gradient_ij;
-      }
-      P.a[i] += a_i;
-    }
+    });
   });
   shares.merge(P.a, threaded);
   sph::parallel_pass(n, threaded, [&](long i) {
@@ -233,21 +235,23 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
 std::vector<Vec2> forces_on_walls(const FluidParticles& P, const sph::NeighbourList& pairs,
                                   const FluidParameters& par) {
   std::vector<Vec2> force(P.first_wall_id.size(), Vec2::Zero());
-  const MomentumDissipation Pi_of(par.dissipation, par.h, par.c0, par.A, par.B);
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    if (!P.is_water(i)) continue;
-    const auto neighbours = pairs.neighbours(static_cast<long>(i));
-    const auto F = pairs.gradient_factors(static_cast<long>(i));
-    for (std::size_t k = 0; k < neighbours.size(); ++k) {
-      const int j = neighbours[k];
-      if (P.is_water(j)) continue;
-      const Vec2 x_ij = P.x[i] - P.x[j];
-      const double Pi_ij = Pi_of(x_ij, P.v[i] - P.v[j], 0.5 * (P.rho[i] + P.rho[j]));
-      force[P.wall_of(j)] -= P.m[i] * P.m[j] *
-                             sph::bracket_times_gradient(P.sigma[i], P.sigma[j], P.inverse_rho[i],
-                                                         P.inverse_rho[j], Pi_ij, F[k] * x_ij);
+  with_dissipation(par.dissipation, [&](auto dissipation) {
+    const MomentumDissipation<dissipation> Pi_of(par.h, par.c0, par.A, par.B);
+    for (std::size_t i = 0; i < P.size(); ++i) {
+      if (!P.is_water(i)) continue;
+      const auto neighbours = pairs.neighbours(static_cast<long>(i));
+      const auto F = pairs.gradient_factors(static_cast<long>(i));
+      for (std::size_t k = 0; k < neighbours.size(); ++k) {
+        const int j = neighbours[k];
+        if (P.is_water(j)) continue;
+        const Vec2 x_ij = P.x[i] - P.x[j];
+        const double Pi_ij = Pi_of(x_ij, P.v[i] - P.v[j], 0.5 * (P.rho[i] + P.rho[j]));
+        force[P.wall_of(j)] -= P.m[i] * P.m[j] *
+                               sph::bracket_times_gradient(P.sigma[i], P.sigma[j], P.inverse_rho[i],
+                                                           P.inverse_rho[j], Pi_ij, F[k] * x_ij);
+      }
     }
-  }
+  });
   return force;
 }
 

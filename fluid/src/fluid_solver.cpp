@@ -130,7 +130,9 @@ void FluidSolver::end_step(double dt) {
   });
   time_ += dt;
   ++steps_;
-  if (may_have_run_away()) remove_thinned_spray();
+  // The screen is one pass over the particles; a sound state needs no second.
+  if (!may_have_run_away()) return;
+  remove_thinned_spray();
   check_state();
 }
 
