@@ -60,6 +60,12 @@ Participant::Participant(const std::string& endpoint, double timeout_seconds,
   impl_->timeout = std::chrono::milliseconds(static_cast<long>(1000.0 * (timeout_seconds + grace)));
   impl_->endpoint = endpoint;
   impl_->socket.set(zmq::sockopt::linger, 0);  // never hang on exit over unsent messages
+  // The launcher starts the coupler and the solvers together, so a solver often
+  // tries before the coupler has bound its socket. ZeroMQ's default first retry
+  // after 100 ms was most of a coupled run's start-up; a short first retry that
+  // backs off to the same 100 ms keeps a coupler that is truly away unhurried.
+  impl_->socket.set(zmq::sockopt::reconnect_ivl, 5);
+  impl_->socket.set(zmq::sockopt::reconnect_ivl_max, 100);
   use_client_keys(impl_->socket, keys);
   impl_->keyed = keys.given();
   try {
