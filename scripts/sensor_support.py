@@ -39,17 +39,28 @@ import pressure_noise as pn
 import validate_dam_break as dam
 
 SPACING = 0.004
-ALPHA = 0.02  # the case's fluid.artificial_viscosity
+
+
+def case_text():
+    """cases/dam_break.pbtxt as text."""
+    with open(os.path.join(cr.REPO, "cases", "dam_break.pbtxt")) as case:
+        return case.read()
 
 
 def case_probe(index):
     """The case's pressure sensor `index` (cases/dam_break.pbtxt, pressure_probes), in m."""
-    with open(os.path.join(cr.REPO, "cases", "dam_break.pbtxt")) as case:
-        probes = re.findall(r"pressure_probes\s*\{\s*x:\s*(\S+)\s+y:\s*(\S+)\s*\}", case.read())
+    probes = re.findall(r"pressure_probes\s*\{\s*x:\s*(\S+)\s+y:\s*(\S+)\s*\}", case_text())
     return np.array([float(value) for value in probes[index]])
 
 
+def case_fluid_value(field):
+    """A number the case's fluid block sets (e.g. artificial_viscosity, h_factor)."""
+    return float(re.search(rf"^\s*{field}:\s*(\S+)", case_text(), re.MULTILINE).group(1))
+
+
 PROBE = case_probe(1)  # probe1, on the far wall
+ALPHA = case_fluid_value("artificial_viscosity")
+H_FACTOR = case_fluid_value("h_factor")
 RUNS = [  # (key, label, settings)
     ("default", "delta-SPH, cubic spline, h = 1.3 dx (the default)", []),
     ("wendland_2dx", "delta-SPH, Wendland C2, h = 2 dx", pn.WENDLAND_2DX),
@@ -59,11 +70,11 @@ RUNS = [  # (key, label, settings)
     # also acts between water and the walls (their no-slip, docs/physics.md),
     # held at the default's by alpha = 0.02 x 1.3 / 2.
     ("wendland_2dx_same_alpha_h", "delta-SPH, Wendland C2, h = 2 dx, alpha = "
-     f"{ALPHA * 1.3 / 2:g} (alpha h as the default's; a diagnosis)",
-     pn.WENDLAND_2DX + [f"fluid.artificial_viscosity={ALPHA * 1.3 / 2:g}"]),
+     f"{ALPHA * H_FACTOR / 2:g} (alpha h as the default's; a diagnosis)",
+     pn.WENDLAND_2DX + [f"fluid.artificial_viscosity={ALPHA * H_FACTOR / 2:g}"]),
 ]
 SUPPORTS = [  # (label, kernel, h): the sensor's, as in the runs
-    ("cubic spline, h = 1.3 dx (the default)", "cubic_spline", 1.3 * SPACING),
+    ("cubic spline, h = 1.3 dx (the default)", "cubic_spline", H_FACTOR * SPACING),
     ("Wendland C2, h = 2 dx", "wendland_c2", 2.0 * SPACING),
 ]
 SNAPSHOT_INTERVAL = 0.0025  # s: 80 snapshots over the window
