@@ -20,6 +20,7 @@ import interface_acceleration as ia
 import pressure_noise as pn
 
 OPTIONS = [("delta_sph", "the case: delta-SPH, cubic spline, h = 1.3 dx", []),
+           ("riemann", "Riemann, cubic spline, h = 1.3 dx", ["fluid.dissipation=riemann"]),
            ("wendland_2dx", "delta-SPH, Wendland C2, h = 2 dx", pn.WENDLAND_2DX),
            ("riemann_wendland_2dx", "Riemann, Wendland C2, h = 2 dx",
             ["fluid.dissipation=riemann"] + pn.WENDLAND_2DX)]

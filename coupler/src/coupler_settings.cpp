@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "fluid_parameters.hpp"
 #include "participant/coupling_timeout.hpp"
 #include "sphcore/run_parameters.hpp"
 #include "substep_choice.hpp"
@@ -61,6 +62,14 @@ CrossPhaseParameters read_cross_phase_parameters(const sph::CaseFile& case_file)
   par.B = coupling.artificial_viscosity_quadratic() > 0.0
               ? coupling.artificial_viscosity_quadratic()
               : phase.B;
+  // The water meets the solid as it meets its own walls, with the terms of
+  // its dissipation (read as the fluid reads it). The stress sum is the
+  // study's rule and keeps its own artificial viscosity.
+  if (par.model == InterfaceModel::moving_wall &&
+      cosph::fluid::read_dissipation(case_file) == cosph::fluid::Dissipation::riemann) {
+    par.riemann_dissipation = true;
+    par.rho0 = sph::read_density(case_file, "fluid", case_file.config.fluid().density());
+  }
   return par;
 }
 

@@ -8,6 +8,7 @@
 #include "sphcore/continuity_pair.hpp"
 #include "sphcore/kernel.hpp"
 #include "sphcore/momentum_bracket.hpp"
+#include "sphcore/riemann_dissipation.hpp"
 #include "sphcore/wall_pressure.hpp"
 
 namespace cosph::coupler {
@@ -92,6 +93,10 @@ void add_stress_sum(const sph::InterfaceParticles& F, const sph::InterfacePartic
   }
 }
 
+// Compiled once with the water's Riemann terms and once without, as the
+// fluid's continuity pass is (with_dissipation): the default's pair loop holds
+// only its own terms, and its results do not move with the Riemann option's.
+template <bool kRiemann>
 void add_moving_wall(const sph::InterfaceParticles& F, const sph::InterfaceParticles& S,
                      const std::vector<Pair>& pairs, const CrossPhaseParameters& par,
                      CrossPhaseForces& out) {
@@ -111,8 +116,14 @@ void add_moving_wall(const sph::InterfaceParticles& F, const sph::InterfaceParti
   for (const Pair& p : pairs) {
     const double rho_f = F.rho[p.f], V_s = S.m[p.s] / S.rho[p.s];
     const Vec2 v_fs = F.v[p.f] - S.v[p.s];
-    const double Pi_fs =
-        sph::artificial_viscosity(p.x_fs, v_fs, p.h_fs, F.c[p.f], rho_f, par.A, par.B);
+    // The water's own c0 (the sound speed it sends) and density, as against
+    // its own walls.
+    const double Pi_fs = [&] {
+      if constexpr (kRiemann)
+        return sph::RiemannLimitedDissipation(F.c[p.f])(p.x_fs, v_fs, rho_f);
+      else
+        return sph::artificial_viscosity(p.x_fs, v_fs, p.h_fs, F.c[p.f], rho_f, par.A, par.B);
+    }();
     // The wall particle has the water's density and the solid particle's volume.
     const Vec2 a_f =
         sph::momentum_pair(V_s * rho_f, F.sigma[p.f], -P_w[p.s] * sph::Mat2::Identity(), rho_f,
@@ -120,6 +131,20 @@ void add_moving_wall(const sph::InterfaceParticles& F, const sph::InterfaceParti
     out.fluid_a[p.f] += a_f;
     out.solid_a[p.s] -= (F.m[p.f] * a_f) / S.m[p.s];
     out.fluid_drho[p.f] += sph::continuity_pair(rho_f, V_s, v_fs, p.grad_W);
+    if constexpr (kRiemann) {
+      // The wall's side of the Riemann problem mirrors the water particle, as
+      // the water's own walls do (not P_w, the kernel mean that lies below the
+      // water's pressure where a flow stagnates on the plate), with the body
+      // force P_w takes. The pressure is the one P_w is extrapolated from,
+      // the trace of the stress sent.
+      const double P_f = -0.5 * F.sigma[p.f].trace();
+      const Vec2 body_force = accelerating ? Vec2(par.gravity - S.a[p.s]) : par.gravity;
+      const double P_s = sph::riemann_wall_pressure(P_f, rho_f, body_force, p.x_fs);
+      // grad_f W_fs = F_fs x_fs, F_fs taken again as find_pairs took it.
+      const double F_fs = sph::kernel::GradientFactor(p.h_fs)(p.x_fs.norm());
+      out.fluid_drho[p.f] += sph::riemann_density_dissipation_pair(
+          rho_f, V_s, P_f, P_s, F_fs, p.x_fs, 1.0 / (par.rho0 * F.c[p.f]));
+    }
   }
 }
 
@@ -141,8 +166,10 @@ CrossPhaseForces compute_cross_phase_forces(const sph::InterfaceParticles& F,
   out.pairs = static_cast<long>(pairs.size());
   if (par.model == InterfaceModel::stress_sum)
     add_stress_sum(F, S, pairs, par, out);
+  else if (par.riemann_dissipation)
+    add_moving_wall<true>(F, S, pairs, par, out);
   else
-    add_moving_wall(F, S, pairs, par, out);
+    add_moving_wall<false>(F, S, pairs, par, out);
 
   // The totals the solvers will feel, summed from what they are sent: that
   // they cancel is a check, not an identity.

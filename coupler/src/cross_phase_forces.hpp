@@ -19,6 +19,11 @@
 // The solid then feels the water's pressure, not its own stress: the bending
 // stress along a plate (hundreds of times the water pressure) never enters the
 // water's momentum, where its discretisation noise tore the water apart.
+// With the water's fluid.dissipation riemann the pairs take the terms the water
+// takes against its own walls (sphcore/riemann_dissipation.hpp): Pi_fs is the
+// Riemann solver's limited dissipation, and drho_f gains the Riemann density
+// term against the wall's side mirroring the water particle,
+//   P_s = P_f + rho_f (g - a_w) . (x_s - x_f).
 #pragma once
 
 #include <vector>
@@ -37,6 +42,11 @@ struct CrossPhaseParameters {
   double B = 0.0;                  // and quadratic
   Vec2 gravity = Vec2::Zero();     // moving_wall: g in the body force g - a_w of P_w
   bool wall_acceleration = false;  // moving_wall: a_w taken when the solid sends it
+  // moving_wall: the water's Riemann terms in place of Monaghan's viscosity
+  // (fluid.dissipation riemann), with the water's reference density rho0 in
+  // their 1 / (rho0 c0); c0 is the sound speed the fluid sends.
+  bool riemann_dissipation = false;
+  double rho0 = 1000.0;
 };
 
 struct CrossPhaseForces {

@@ -5,15 +5,18 @@
 //   fourtakas  density diffusion with the hydrostatic part removed
 //              (hydrostatic_density_diffusion.hpp) and Monaghan's viscosity;
 //   riemann    Riemann-solver SPH with the dissipation limiter in both
-//              equations (riemann_dissipation.hpp), no artificial viscosity.
+//              equations (sphcore/riemann_dissipation.hpp), no artificial viscosity.
 #pragma once
 
 #include <type_traits>
 
-#include "riemann_dissipation.hpp"
 #include "sphcore/artificial_viscosity.hpp"
+#include "sphcore/riemann_dissipation.hpp"
+#include "sphcore/types.hpp"
 
 namespace cosph::fluid {
+
+using sph::Vec2;
 
 enum class Dissipation { delta_sph, fourtakas, riemann };
 
@@ -51,7 +54,7 @@ class MomentumDissipation {
 
  private:
   sph::UniformArtificialViscosity monaghan_;
-  RiemannLimitedDissipation riemann_limited_;
+  sph::RiemannLimitedDissipation riemann_limited_;
 };
 
 }  // namespace cosph::fluid

@@ -73,9 +73,9 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
           const double P_j =
               P.is_water(j)
                   ? P.p[j]
-                  : riemann_wall_pressure(P.p[i], rho_i, par.run.gravity - P.wall_a[j], x_ij);
-          drho_i += riemann_density_dissipation_pair(rho_i, V_j, P.p[i], P_j, F[k], x_ij,
-                                                     inverse_rho0_c0);
+                  : sph::riemann_wall_pressure(P.p[i], rho_i, par.run.gravity - P.wall_a[j], x_ij);
+          drho_i += sph::riemann_density_dissipation_pair(rho_i, V_j, P.p[i], P_j, F[k], x_ij,
+                                                          inverse_rho0_c0);
         }
         if (!P.is_water(j)) {
           wall_in_reach = true;

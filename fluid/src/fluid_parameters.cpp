@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "sphcore/region_reader.hpp"
 
@@ -9,6 +10,16 @@ namespace cosph::fluid {
 
 using sph::format_number;
 using sph::require;
+
+Dissipation read_dissipation(const sph::CaseFile& case_file) {
+  const std::string& name = case_file.config.fluid().dissipation();
+  require(name.empty() || name == "delta_sph" || name == "fourtakas" || name == "riemann",
+          case_file, "fluid.dissipation",
+          "unknown dissipation '" + name + "' (known: delta_sph, fourtakas, riemann)");
+  return name == "riemann"     ? Dissipation::riemann
+         : name == "fourtakas" ? Dissipation::fourtakas
+                               : Dissipation::delta_sph;
+}
 
 FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
   require(case_file.config.has_fluid(), case_file, "fluid", "missing: this case has no fluid");
@@ -31,14 +42,7 @@ FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
   p.delta = fluid.density_diffusion() < 0.0   ? 0.0
             : fluid.density_diffusion() > 0.0 ? fluid.density_diffusion()
                                               : 0.1;
-  require(
-      fluid.dissipation().empty() || fluid.dissipation() == "delta_sph" ||
-          fluid.dissipation() == "fourtakas" || fluid.dissipation() == "riemann",
-      case_file, "fluid.dissipation",
-      "unknown dissipation '" + fluid.dissipation() + "' (known: delta_sph, fourtakas, riemann)");
-  p.dissipation = fluid.dissipation() == "riemann"     ? Dissipation::riemann
-                  : fluid.dissipation() == "fourtakas" ? Dissipation::fourtakas
-                                                       : Dissipation::delta_sph;
+  p.dissipation = read_dissipation(case_file);
   require(
       fluid.kernel().empty() || fluid.kernel() == "cubic_spline" || fluid.kernel() == "wendland_c2",
       case_file, "fluid.kernel",

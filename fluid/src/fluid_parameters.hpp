@@ -38,4 +38,8 @@ struct FluidParameters {
 // Throws sph::ConfigError naming the file, field and reason for bad input.
 FluidParameters read_fluid_parameters(const sph::CaseFile& case_file);
 
+// fluid.dissipation alone, checked as read_fluid_parameters checks it: the
+// coupler reads it too, to meet the solid with the water's wall terms.
+Dissipation read_dissipation(const sph::CaseFile& case_file);
+
 }  // namespace cosph::fluid

@@ -4,11 +4,17 @@
 // solid, and (moving_wall) the solid's share in the water's continuity.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
+#include <vector>
 
+#include "coupler_settings.hpp"
 #include "cross_phase_forces.hpp"
+#include "sphcore/case_file.hpp"
 #include "sphcore/kernel.hpp"
+#include "sphcore/riemann_dissipation.hpp"
 
 namespace {
 
@@ -216,6 +222,169 @@ TEST(CrossPhaseForces, AcceleratingWallGetsTheExtrapolatedPressureOfGMinusA) {
   const double error = rho * a.dot(S.x[0] - x_bar);  // what leaving a_w out adds
   ASSERT_GT(std::abs(error), 1.0);                   // Pa: a real difference
   EXPECT_NEAR(fixed.wall_pressure[0] - error, expected, 1e-6 * expected);
+}
+
+// fluid.dissipation riemann: the coupler's pair terms are the water's own
+// against its walls (sphcore/riemann_dissipation.hpp). One water particle
+// approaching one solid particle below it, under gravity, the solid
+// accelerating (coupling.wall_acceleration): the density rate and the
+// acceleration written out from the paper's terms. The wall's side of the
+// Riemann problem mirrors the water particle, P_s = P_f + rho_f (g - a_s) .
+// (x_s - x_f); with one water particle in reach, Adami's P_w is that same
+// pressure.
+TEST(CrossPhaseForces, RiemannDissipationGivesTheWatersWallTerms) {
+  const double rho_f = 1003.0, P_f = 2500.0, c0 = 20.0, rho0 = 1000.0, h = 1.3e-3;
+  const double m_s = 2.2e-3, rho_s = 1100.0, V_s = m_s / rho_s;
+  const Vec2 x_f(0.0, 0.0), x_s(0.3e-3, -0.9e-3), g(0.0, -9.81), a_s(1.5, 40.0);
+  const auto water_moving_at = [&](const Vec2& v_f) {
+    sph::InterfaceParticles F;
+    F.add(0, x_f, v_f, -P_f * Mat2::Identity(), rho_f * 1e-6, rho_f, h, c0);
+    return F;
+  };
+  sph::InterfaceParticles S;
+  S.add(0, x_s, Vec2::Zero(), a_s, Mat2::Zero(), m_s, rho_s, h, 50.0);
+  CrossPhaseParameters riemann = kWall;
+  riemann.gravity = g;
+  riemann.wall_acceleration = true;
+  riemann.riemann_dissipation = true;
+  riemann.rho0 = rho0;
+  const Vec2 x_fs = x_f - x_s;
+  const double r = x_fs.norm(), dW_dr = sph::kernel::dW_dr(r, h);
+  const Vec2 e = x_fs / r;  // from the solid to the water
+  const double P_s = P_f + rho_f * (g - a_s).dot(x_s - x_f);
+  ASSERT_GT(std::abs(P_f - P_s), 10.0);  // Pa: a real pressure jump across the pair
+
+  // Continuity, the water drifting slowly towards the solid: the central term
+  // plus density flowing from the higher pressure to the lower, P_f - P_s over
+  // rho0 c0, along dW/dr.
+  const Vec2 slow(0.001, -0.003);
+  const auto F = water_moving_at(slow);
+  const CrossPhaseForces out = compute_cross_phase_forces(F, S, riemann);
+  ASSERT_EQ(out.pairs, 1);
+  const double central = rho_f * V_s * slow.dot(dW_dr * e);
+  const double drho = central + rho_f * V_s * (P_f - P_s) / (rho0 * c0) * dW_dr;
+  EXPECT_NEAR(out.fluid_drho[0], drho, 1e-12 * std::abs(drho));
+  EXPECT_GT(std::abs(drho - central), 0.2 * std::abs(central));  // the term is felt
+  EXPECT_NEAR(compute_cross_phase_forces(F, S, kWall).fluid_drho[0], central,
+              1e-12 * std::abs(central));  // and only with riemann
+
+  // Momentum, the water approaching fast: P* = (P_f + P_w) / 2 + rho_f beta
+  // (U_f - U_s) / 2, beta = min(3 (U_f - U_s), c0), U_f - U_s = -v_fs . e > 0.
+  // With one water particle in reach, Adami's P_w is P_s.
+  const Vec2 fast(0.5, -1.5);
+  const auto G = water_moving_at(fast);
+  const CrossPhaseForces hit = compute_cross_phase_forces(G, S, riemann);
+  ASSERT_NEAR(hit.wall_pressure[0], P_s, 1e-9 * P_s);
+  const double approach = -fast.dot(e);
+  ASSERT_GT(approach, 0.0);
+  const double Pi = std::min(3.0 * approach, c0) * approach / rho_f;
+  ASSERT_GT(rho_f * Pi, 0.5 * (P_f + P_s) / rho_f);  // the dissipation matters
+  const Vec2 a_f = V_s * (-(P_f + P_s) / rho_f - rho_f * Pi) * dW_dr * e;
+  EXPECT_LT((hit.fluid_a[0] - a_f).norm(), 1e-12 * a_f.norm());
+  EXPECT_LT((m_s * hit.solid_a[0] + G.m[0] * hit.fluid_a[0]).norm(), 1e-12 * G.m[0] * a_f.norm());
+}
+
+// Water at rest over a solid floor, hydrostatic under gravity, dx-spaced with
+// the floor's particles continuing its lattice below it. The water's own
+// Riemann terms (over the water) drain the bottom rows into the water above,
+// where the pressure is lower; the floor's terms, its side mirroring each
+// water particle, must give exactly that back, as the water's own floor does
+// (fluid's test RiemannDissipation.AWallPassesNoDensityToWaterAtRestWithoutGravity,
+// and the still tank of StillTankWith). Without them the bottom of a tank
+// beside a plate sinks below hydrostatic pressure.
+TEST(CrossPhaseForces, RiemannFloorHoldsHydrostaticWaterWithoutDrain) {
+  const double rho = 1000.0, c0 = 20.0, dx = 1e-3, h = 1.3 * dx, H = 0.012;
+  const Vec2 g(0.0, -9.81);
+  const int columns = 16, rows = static_cast<int>(std::lround(H / dx));
+  sph::InterfaceParticles F;
+  for (int i = 0; i < columns; ++i)
+    for (int j = 0; j < rows; ++j) {
+      const Vec2 x((i + 0.5) * dx, (j + 0.5) * dx);
+      F.add(i * rows + j, x, Vec2::Zero(), -rho * 9.81 * (H - x.y()) * Mat2::Identity(),
+            rho * dx * dx, rho, h, c0);
+    }
+  const auto S = block(-0.004, columns * dx + 0.004, 0.003, dx, 1100.0, 0.0);
+  sph::InterfaceParticles floor = S;
+  for (Vec2& x : floor.x) x.y() -= 0.003;  // below y = 0
+  CrossPhaseParameters riemann = kWall;
+  riemann.gravity = g;
+  riemann.riemann_dissipation = true;
+  riemann.rho0 = rho;
+  const CrossPhaseForces out = compute_cross_phase_forces(F, floor, riemann);
+
+  // The water's own Riemann density terms, over the water.
+  const double inverse_rho0_c0 = 1.0 / (rho * c0);
+  double largest = 0.0;
+  int checked = 0;
+  for (std::size_t f = 0; f < F.size(); ++f) {
+    const Vec2 x = F.x[f];
+    // The rows the floor reaches (its top row is dx / 2 below y = 0), away
+    // from the sides, where the water's own neighbours are missing.
+    if (x.x() < 2.0 * h || x.x() > columns * dx - 2.0 * h || x.y() + 0.5 * dx >= 2.0 * h) continue;
+    double own = 0.0;
+    for (std::size_t j = 0; j < F.size(); ++j) {
+      const Vec2 x_fj = x - F.x[j];
+      const double r = x_fj.norm();
+      if (j == f || r >= 2.0 * h) continue;
+      own += sph::riemann_density_dissipation_pair(rho, dx * dx, -F.sigma[f](0, 0),
+                                                   -F.sigma[j](0, 0), sph::kernel::dW_dr(r, h) / r,
+                                                   x_fj, inverse_rho0_c0);
+    }
+    ASSERT_LT(own, 0.0) << "water particle " << f;  // the drain the floor must stop
+    largest = std::max(largest, -own);
+    EXPECT_NEAR(out.fluid_drho[f], -own, 1e-9 * std::abs(own)) << "water particle " << f;
+    ++checked;
+  }
+  EXPECT_GT(checked, 10);
+  // The floor at rest passes nothing in the central term: what it gives is all Riemann.
+  const double central = compute_cross_phase_forces(F, floor, kWall).fluid_drho[0];
+  EXPECT_EQ(central, 0.0);
+  EXPECT_GT(largest, 0.0);
+}
+
+// With no gravity and the water's pressure rising towards the plate (a flow
+// stagnating on it, at rest for an instant), the plate takes no density from
+// the water: its side mirrors each water particle, P_s = P_f. Adami's P_w,
+// the kernel mean of the water within 2h, lies below the pressure of the
+// water beside it: used as the Riemann wall's pressure, that water would
+// drain into the plate.
+TEST(CrossPhaseForces, RiemannPlatePassesNoDensityToWaterAtRestWithoutGravity) {
+  const double rho = 1000.0, c0 = 20.0, dx = 1e-3, L = 0.007, k = 2.0e7;  // Pa/m^2
+  sph::InterfaceParticles F;
+  for (int i = 0; i < 7; ++i)
+    for (int j = 0; j < 12; ++j) {
+      const Vec2 x(-(i + 0.5) * dx, (j + 0.5) * dx);
+      const double P = k * (x.x() + L) * (x.x() + L);
+      F.add(i * 12 + j, x, Vec2::Zero(), -P * Mat2::Identity(), rho * dx * dx, rho, 1.3 * dx, c0);
+    }
+  const auto S = block(0.0, 0.003, 0.012, dx, 1100.0, 0.0);
+  CrossPhaseParameters riemann = kWall;
+  riemann.riemann_dissipation = true;
+  riemann.rho0 = rho;
+  const CrossPhaseForces out = compute_cross_phase_forces(F, S, riemann);
+  // The setting: the plate's extrapolated pressure, on the middle row next to
+  // the water, lies below that of the water beside it.
+  const int water_beside = 6, plate_beside = 6;  // x = -dx/2 and +dx/2, y = 6.5 dx
+  ASSERT_EQ(F.x[water_beside].y(), S.x[plate_beside].y());
+  ASSERT_LT(out.wall_pressure[plate_beside], -F.sigma[water_beside](0, 0));
+  for (std::size_t f = 0; f < F.size(); ++f)
+    EXPECT_EQ(out.fluid_drho[f], 0.0) << "water particle " << f;
+}
+
+// The coupler takes the water's dissipation from the case, as the fluid reads
+// it, for the moving wall only: the stress sum keeps its own viscosity.
+TEST(CrossPhaseForces, TheCaseRiemannDissipationReachesTheMovingWall) {
+  const std::string plate = std::string(COSPH_SOURCE_DIR) + "/cases/elastic_plate.pbtxt";
+  const auto cross_phase = [&](const std::vector<std::string>& settings) {
+    return cosph::coupler::read_coupler_settings(sph::load_case(plate, settings)).cross_phase;
+  };
+  EXPECT_FALSE(cross_phase({}).riemann_dissipation);
+  EXPECT_FALSE(cross_phase({"fluid.dissipation=fourtakas"}).riemann_dissipation);
+  const CrossPhaseParameters riemann = cross_phase({"fluid.dissipation=riemann"});
+  EXPECT_TRUE(riemann.riemann_dissipation);
+  EXPECT_EQ(riemann.rho0, sph::load_case(plate, {}).config.fluid().density());
+  EXPECT_FALSE(cross_phase({"fluid.dissipation=riemann", "coupling.interface=stress_sum"})
+                   .riemann_dissipation);
 }
 
 // The study's rule has no share in the continuity: nothing is sent.

@@ -18,9 +18,9 @@
 #include "fluid_solver.hpp"
 #include "fluid_test_support.hpp"
 #include "hydrostatic_density_diffusion.hpp"
-#include "riemann_dissipation.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/kernel.hpp"
+#include "sphcore/riemann_dissipation.hpp"
 
 namespace cosph::fluid {
 namespace {
@@ -29,7 +29,7 @@ const std::string kDamBreak = std::string(COSPH_SOURCE_DIR) + "/cases/dam_break.
 constexpr double kRho0 = 1000.0, kC0 = 23.8, kG = 9.81;
 
 TEST(RiemannDissipation, DampsOnlyApproachAndIsLimitedToTheSoundSpeed) {
-  const RiemannLimitedDissipation Pi(kC0);
+  const sph::RiemannLimitedDissipation Pi(kC0);
   const Vec2 x_ij(0.008, 0.0);  // i to the right of j
   const double rho_bar = 1010.0;
   // Moving apart: no dissipation at all.
@@ -49,13 +49,14 @@ TEST(RiemannDissipation, DensityFlowsFromHighToLowPressure) {
   const double F_ij = sph::kernel::dW_dr(r, h) / r;
   const double inverse_rho0_c0 = 1.0 / (kRho0 * kC0);
   const double into_i =
-      riemann_density_dissipation_pair(rho_i, V_j, P_i, P_j, F_ij, x_ij, inverse_rho0_c0);
+      sph::riemann_density_dissipation_pair(rho_i, V_j, P_i, P_j, F_ij, x_ij, inverse_rho0_c0);
   // rho_i V_j (P_i - P_j) / (rho0 c0) dW/dr: negative, i is at the higher pressure.
   EXPECT_NEAR(into_i, rho_i * V_j * (P_i - P_j) * inverse_rho0_c0 * sph::kernel::dW_dr(r, h),
               1e-12 * std::abs(into_i));
   EXPECT_LT(into_i, 0.0);
-  EXPECT_GT(riemann_density_dissipation_pair(rho_i, V_j, P_j, P_i, F_ij, -x_ij, inverse_rho0_c0),
-            0.0);
+  EXPECT_GT(
+      sph::riemann_density_dissipation_pair(rho_i, V_j, P_j, P_i, F_ij, -x_ij, inverse_rho0_c0),
+      0.0);
 }
 
 // Water at rest against a wall, no gravity, its pressure rising towards the

@@ -11,7 +11,9 @@
 //   dv_i/dt   = -2 sum_j m_j P* / (rho_i rho_j) grad_i W_ij.
 // Written against the central terms (sphcore's continuity_pair.hpp and
 // momentum_bracket.hpp), each is that term plus one dissipative term, which
-// is what lives here.
+// is what lives here: the fluid takes them between its particles and against
+// its own walls (fluid.dissipation riemann), and the coupler against the
+// solid's particles seen as a moving wall, so the water meets both walls alike.
 #pragma once
 
 #include <algorithm>
@@ -19,9 +21,7 @@
 
 #include "sphcore/types.hpp"
 
-namespace cosph::fluid {
-
-using sph::Vec2;
+namespace sph {
 
 // Continuity's dissipative part for one pair,
 //   -2 rho_i V_j (U* - U_bar) e_ij . grad_i W_ij = rho_i V_j (P_i - P_j) / (rho0 c0) F_ij r_ij,
@@ -72,4 +72,4 @@ class RiemannLimitedDissipation {
   double c0_;
 };
 
-}  // namespace cosph::fluid
+}  // namespace sph
