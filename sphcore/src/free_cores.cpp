@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <chrono>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <string>
+#include <thread>
 
 namespace sph {
 namespace {
@@ -69,9 +71,25 @@ double runnable_others(std::istream& proc_stat) {
   return -1.0;
 }
 
+double least_runnable_others(const std::function<double()>& read, int readings,
+                             std::chrono::microseconds apart) {
+  double least = -1.0;
+  for (int k = 0; k < readings; ++k) {
+    if (k > 0) std::this_thread::sleep_for(apart);
+    const double now = read();
+    if (now < 0.0) return now;
+    least = k == 0 ? now : std::min(least, now);
+  }
+  return least;
+}
+
 double runnable_others_now() {
-  std::ifstream stat("/proc/stat");
-  return runnable_others(stat);
+  return least_runnable_others(
+      [] {
+        std::ifstream stat("/proc/stat");
+        return runnable_others(stat);
+      },
+      kFirstLookReadings, kFirstLookApart);
 }
 
 double cores_left_now(double runnable_others, int cores) {

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "fluid_parameters.hpp"
 #include "fluid_solver.hpp"
@@ -109,6 +110,18 @@ TEST(FreeCores, RunnableOthersAreProcsRunningLessTheReader) {
   EXPECT_DOUBLE_EQ(sph::cores_left_now(0.0, 2), 2.0);
   EXPECT_DOUBLE_EQ(sph::cores_left_now(5.0, 2), 0.0);   // clamped
   EXPECT_DOUBLE_EQ(sph::cores_left_now(-1.0, 2), 2.0);  // unreadable: all of them
+}
+
+// A thread caught runnable in one reading of a few does not count: the least
+// reading does. An unreadable /proc/stat reads as unknown.
+TEST(FreeCores, TheFirstLookTakesTheLeastOfItsReadings) {
+  const std::vector<double> readings = {2.0, 0.0, 1.0};
+  std::size_t next = 0;
+  const auto read = [&] { return readings[next++ % readings.size()]; };
+  EXPECT_DOUBLE_EQ(sph::least_runnable_others(read, 3, std::chrono::microseconds(0)), 0.0);
+  next = 0;
+  EXPECT_DOUBLE_EQ(sph::least_runnable_others(read, 1, std::chrono::microseconds(0)), 2.0);
+  EXPECT_LT(sph::least_runnable_others([] { return -1.0; }, 3, std::chrono::microseconds(0)), 0.0);
 }
 
 // The first look does not wait for /proc/stat's CPU times to fill a window:

@@ -6,6 +6,8 @@
 // stalls every loop: the thread count follows the cores that are free.
 #pragma once
 
+#include <chrono>
+#include <functional>
 #include <istream>
 
 namespace sph {
@@ -28,6 +30,16 @@ double cores_left_by_others(const CpuTimes& earlier, const CpuTimes& later, int 
 // /proc/stat's procs_running (every runnable thread of the machine) less the
 // one reading it. Negative when it cannot be read.
 double runnable_others(std::istream& proc_stat);
+
+// The least of `readings` of read(), `apart` from each other; negative if one
+// is. A thread runnable for an instant (the launcher reading a pipe, a shell
+// drawing its prompt) holds no core, yet one reading that caught it would
+// keep a run on one thread until its first look again, a second later.
+double least_runnable_others(const std::function<double()>& read, int readings,
+                             std::chrono::microseconds apart);
+inline constexpr int kFirstLookReadings = 5;
+inline constexpr std::chrono::microseconds kFirstLookApart{1000};
+// /proc/stat's runnable others now, as least_runnable_others takes them.
 double runnable_others_now();
 
 // The cores `runnable_others` leave, never below 0 nor above `cores`.
