@@ -37,7 +37,9 @@ template <class GradientFactor>
 std::vector<Pair> find_pairs(const sph::InterfaceParticles& F, const sph::InterfaceParticles& S,
                              sph::kernel::Shape shape) {
   std::vector<Pair> pairs;
-  // 2 h_fs = h_f + h_s, so no pair reaches farther than the two largest h.
+  // Either shape's support kSupport h_fs is 2 h_fs = h_f + h_s, so no pair
+  // reaches farther than the two largest h.
+  static_assert(sph::kernel::kSupport == 2.0, "the reach h_f + h_s is the support");
   const double range =
       *std::max_element(F.h.begin(), F.h.end()) + *std::max_element(S.h.begin(), S.h.end());
   sph::CellGrid grid;
