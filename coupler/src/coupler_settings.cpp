@@ -70,6 +70,11 @@ CrossPhaseParameters read_cross_phase_parameters(const sph::CaseFile& case_file)
     par.riemann_dissipation = true;
     par.rho0 = sph::read_density(case_file, "fluid", case_file.config.fluid().density());
   }
+  // And through its own kernel, as its wall pressure and wall pairs are
+  // taken. The stress sum meets the solid's stress, whose pairs are all
+  // cubic spline, and keeps that kernel.
+  if (par.model == InterfaceModel::moving_wall)
+    par.kernel = cosph::fluid::read_kernel_shape(case_file);
   return par;
 }
 

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "sphcore/artificial_viscosity.hpp"
 #include "sphcore/cell_grid.hpp"
 #include "sphcore/continuity_pair.hpp"
 #include "sphcore/kernel.hpp"
+#include "sphcore/kernel_shape.hpp"
 #include "sphcore/momentum_bracket.hpp"
 #include "sphcore/riemann_dissipation.hpp"
 #include "sphcore/wall_pressure.hpp"
@@ -29,9 +31,15 @@ struct Pair {
 // a clamped plate sends into still water; but at the elastic plate's
 // resolutions that support spans the plate, so the wall pressure mixes the
 // water of both sides once it flows past, and the free plate bent less.
-std::vector<Pair> find_pairs(const sph::InterfaceParticles& F, const sph::InterfaceParticles& S) {
+// W and grad W are of `shape` (the GradientFactor's): both shapes reach 2h, so
+// which pairs there are does not depend on it.
+template <class GradientFactor>
+std::vector<Pair> find_pairs(const sph::InterfaceParticles& F, const sph::InterfaceParticles& S,
+                             sph::kernel::Shape shape) {
   std::vector<Pair> pairs;
-  // 2 h_fs = h_f + h_s, so no pair reaches farther than the two largest h.
+  // Either shape's support kSupport h_fs is 2 h_fs = h_f + h_s, so no pair
+  // reaches farther than the two largest h.
+  static_assert(sph::kernel::kSupport == 2.0, "the reach h_f + h_s is the support");
   const double range =
       *std::max_element(F.h.begin(), F.h.end()) + *std::max_element(S.h.begin(), S.h.end());
   sph::CellGrid grid;
@@ -47,8 +55,8 @@ std::vector<Pair> find_pairs(const sph::InterfaceParticles& F, const sph::Interf
   // Each phase has one h in practice, so the kernel's constants are taken
   // again only when h_fs changes, not for every pair.
   double kernel_h = 1.0;
-  sph::kernel::Value W_of(kernel_h);
-  sph::kernel::GradientFactor gradient_factor(kernel_h);
+  sph::kernel::ShapedValue W_of(shape, kernel_h);
+  GradientFactor gradient_factor(kernel_h);
   for (std::size_t f = 0; f < F.size(); ++f) {
     const Vec2 x_f = F.x[f];
     const double h_f = F.h[f];
@@ -67,8 +75,8 @@ std::vector<Pair> find_pairs(const sph::InterfaceParticles& F, const sph::Interf
         const double h_fs = 0.5 * (h_f + h_s[k]), r = std::sqrt(candidate_r2[n]);
         if (h_fs != kernel_h) {
           kernel_h = h_fs;
-          W_of = sph::kernel::Value(h_fs);
-          gradient_factor = sph::kernel::GradientFactor(h_fs);
+          W_of = sph::kernel::ShapedValue(shape, h_fs);
+          gradient_factor = GradientFactor(h_fs);
         }
         const Vec2 x_fs = x_f - x_s[k];
         pairs.push_back(
@@ -77,6 +85,13 @@ std::vector<Pair> find_pairs(const sph::InterfaceParticles& F, const sph::Interf
     });
   }
   return pairs;
+}
+
+std::vector<Pair> find_pairs(const sph::InterfaceParticles& F, const sph::InterfaceParticles& S,
+                             sph::kernel::Shape shape) {
+  return sph::kernel::with_gradient_factor(shape, 1.0, [&](const auto gradient_factor) {
+    return find_pairs<std::decay_t<decltype(gradient_factor)>>(F, S, shape);
+  });
 }
 
 void add_stress_sum(const sph::InterfaceParticles& F, const sph::InterfaceParticles& S,
@@ -141,7 +156,9 @@ void add_moving_wall(const sph::InterfaceParticles& F, const sph::InterfaceParti
       const Vec2 body_force = accelerating ? Vec2(par.gravity - S.a[p.s]) : par.gravity;
       const double P_s = sph::riemann_wall_pressure(P_f, rho_f, body_force, p.x_fs);
       // grad_f W_fs = F_fs x_fs, F_fs taken again as find_pairs took it.
-      const double F_fs = sph::kernel::GradientFactor(p.h_fs)(p.x_fs.norm());
+      const double F_fs = sph::kernel::with_gradient_factor(
+          par.kernel, p.h_fs,
+          [&](const auto gradient_factor) { return gradient_factor(p.x_fs.norm()); });
       out.fluid_drho[p.f] += sph::riemann_density_dissipation_pair(
           rho_f, V_s, P_f, P_s, F_fs, p.x_fs, 1.0 / (par.rho0 * F.c[p.f]));
     }
@@ -162,7 +179,7 @@ CrossPhaseForces compute_cross_phase_forces(const sph::InterfaceParticles& F,
   }
   if (F.size() == 0 || S.size() == 0) return out;
 
-  const std::vector<Pair> pairs = find_pairs(F, S);
+  const std::vector<Pair> pairs = find_pairs(F, S, par.kernel);
   out.pairs = static_cast<long>(pairs.size());
   if (par.model == InterfaceModel::stress_sum)
     add_stress_sum(F, S, pairs, par, out);

@@ -1,6 +1,9 @@
 // The cross-phase terms, computed once per fluid-solid pair (r_fs < 2 h_fs,
 // h_fs = (h_f + h_s) / 2) and shared equal and opposite, so the exchange
-// conserves momentum. Two interface models (case field coupling.interface):
+// conserves momentum. W_fs and grad_f W_fs are of the kernel the parameters
+// name: the cubic spline, or for a moving wall the water's own
+// (fluid.kernel), so that the water sees the solid through the kernel it
+// sees its own walls through. Two interface models (case field coupling.interface):
 //
 // stress_sum, the study's rule (docs/physics.md, "Stress sum"): the
 // momentum sum runs over both phases with each particle's own stress,
@@ -29,6 +32,7 @@
 #include <vector>
 
 #include "sphcore/interface_particles.hpp"
+#include "sphcore/kernel_shape.hpp"
 
 namespace cosph::coupler {
 
@@ -47,6 +51,9 @@ struct CrossPhaseParameters {
   // their 1 / (rho0 c0); c0 is the sound speed the fluid sends.
   bool riemann_dissipation = false;
   double rho0 = 1000.0;
+  // The kernel of every pair's W and grad W (fluid.kernel for the moving
+  // wall); the pairs are those within its support 2 h_fs, for either shape.
+  sph::kernel::Shape kernel = sph::kernel::Shape::cubic_spline;
 };
 
 struct CrossPhaseForces {

@@ -21,6 +21,13 @@ Dissipation read_dissipation(const sph::CaseFile& case_file) {
                                : Dissipation::delta_sph;
 }
 
+sph::kernel::Shape read_kernel_shape(const sph::CaseFile& case_file) {
+  const std::string& name = case_file.config.fluid().kernel();
+  require(name.empty() || name == "cubic_spline" || name == "wendland_c2", case_file,
+          "fluid.kernel", "unknown kernel '" + name + "' (known: cubic_spline, wendland_c2)");
+  return name == "wendland_c2" ? sph::kernel::Shape::wendland_c2 : sph::kernel::Shape::cubic_spline;
+}
+
 FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
   require(case_file.config.has_fluid(), case_file, "fluid", "missing: this case has no fluid");
   const auto& fluid = case_file.config.fluid();
@@ -43,12 +50,7 @@ FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
             : fluid.density_diffusion() > 0.0 ? fluid.density_diffusion()
                                               : 0.1;
   p.dissipation = read_dissipation(case_file);
-  require(
-      fluid.kernel().empty() || fluid.kernel() == "cubic_spline" || fluid.kernel() == "wendland_c2",
-      case_file, "fluid.kernel",
-      "unknown kernel '" + fluid.kernel() + "' (known: cubic_spline, wendland_c2)");
-  p.kernel = fluid.kernel() == "wendland_c2" ? sph::kernel::Shape::wendland_c2
-                                             : sph::kernel::Shape::cubic_spline;
+  p.kernel = read_kernel_shape(case_file);
   require(
       fluid.shifting().empty() || fluid.shifting() == "none" || fluid.shifting() == "delta_plus",
       case_file, "fluid.shifting",

@@ -14,7 +14,9 @@
 #include "cross_phase_forces.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/kernel.hpp"
+#include "sphcore/kernel_shape.hpp"
 #include "sphcore/riemann_dissipation.hpp"
+#include "sphcore/wendland_kernel.hpp"
 
 namespace {
 
@@ -385,6 +387,123 @@ TEST(CrossPhaseForces, TheCaseRiemannDissipationReachesTheMovingWall) {
   EXPECT_EQ(riemann.rho0, sph::load_case(plate, {}).config.fluid().density());
   EXPECT_FALSE(cross_phase({"fluid.dissipation=riemann", "coupling.interface=stress_sum"})
                    .riemann_dissipation);
+}
+
+// A kernel's W(r, h) and dW/dr(r, h), to write the moving wall's terms out.
+struct KernelFunctions {
+  double (*W)(double, double);
+  double (*dW_dr)(double, double);
+};
+const KernelFunctions kCubicSpline{sph::kernel::W, sph::kernel::dW_dr};
+const KernelFunctions kWendlandC2{sph::kernel::wendland_c2::W, sph::kernel::wendland_c2::dW_dr};
+
+// The moving wall's terms for one solid particle at x_s moving at v_s, each
+// water particle of F in its reach having that one pair, written out with
+// kernel k (Adami's P_w; momentum and continuity; with rho0 c0 > 0 the
+// Riemann density term against the wall's side mirroring the water particle).
+struct WallTerms {
+  double P_w = 0.0;
+  std::vector<Vec2> a_f;
+  std::vector<double> drho_f;
+  long pairs = 0;
+};
+WallTerms moving_wall_terms(const sph::InterfaceParticles& F, const Vec2& x_s, const Vec2& v_s,
+                            double V_s, double h_s, const Vec2& g, const KernelFunctions& k,
+                            double rho0_c0) {
+  WallTerms out;
+  double weight = 0.0, pressure = 0.0;
+  Vec2 moment = Vec2::Zero();
+  for (std::size_t f = 0; f < F.size(); ++f) {
+    const double h = 0.5 * (F.h[f] + h_s), W = k.W((F.x[f] - x_s).norm(), h);
+    weight += W;
+    pressure += -F.sigma[f](0, 0) * W;
+    moment += F.rho[f] * W * (x_s - F.x[f]);
+  }
+  out.P_w = (pressure + g.dot(moment)) / weight;
+  for (std::size_t f = 0; f < F.size(); ++f) {
+    const Vec2 x_fs = F.x[f] - x_s;
+    const double r = x_fs.norm(), h = 0.5 * (F.h[f] + h_s), rho = F.rho[f];
+    const double P_f = -F.sigma[f](0, 0), dW_dr = r < 2.0 * h ? k.dW_dr(r, h) : 0.0;
+    out.pairs += r < 2.0 * h ? 1 : 0;
+    const Vec2 grad_W = dW_dr * x_fs / r;
+    out.a_f.push_back(V_s * (-(P_f + out.P_w) / rho) * grad_W);
+    double drho = rho * V_s * (F.v[f] - v_s).dot(grad_W);
+    if (rho0_c0 > 0.0) {
+      const double P_s = P_f + rho * g.dot(x_s - F.x[f]);
+      drho += rho * V_s * (P_f - P_s) / rho0_c0 * dW_dr;
+    }
+    out.drho_f.push_back(drho);
+  }
+  return out;
+}
+
+// fluid.kernel wendland_c2 with h = 2 dx (the quiet-pressure option): the
+// moving wall takes the water's kernel for P_w, the momentum and continuity
+// pairs and the Riemann density term, within its support 2 h_fs, h_fs the
+// mean of the two sides' h. Water with a pressure gradient across it,
+// receding from one solid particle below it (so that neither dissipation's
+// Pi acts): the coupler's terms against the same terms written out with the
+// Wendland C2, and against the cubic spline's, which differ.
+TEST(CrossPhaseForces, WendlandMovingWallTakesTheWatersKernel) {
+  const double dx = 2e-3, h_f = 2.0 * dx, h_s = 1.3e-3, c0 = 20.0, rho0 = 1000.0;
+  const double m_s = 1.1e-3, rho_s = 1100.0, V_s = m_s / rho_s;
+  const Vec2 x_s(0.3e-3, 0.0), v_s(0.05, -0.2), g(0.0, -9.81);
+  sph::InterfaceParticles F;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < 4; ++j) {
+      const Vec2 x((i - 2.5) * dx, (j + 0.5) * dx);
+      const double P = 800.0 + 3e4 * x.x() - 9810.0 * x.y(), rho = 1000.0 + 2.0 * j;
+      F.add(4 * i + j, x, Vec2(0.01 * i, 0.02 * j), -P * Mat2::Identity(), rho * dx * dx, rho, h_f,
+            c0);
+    }
+  sph::InterfaceParticles S;
+  S.add(0, x_s, v_s, Mat2::Zero(), m_s, rho_s, h_s, 50.0);
+  CrossPhaseParameters wendland = kWall;
+  wendland.gravity = g;
+  wendland.kernel = sph::kernel::Shape::wendland_c2;
+  for (const bool riemann : {false, true}) {
+    SCOPED_TRACE(riemann ? "riemann" : "delta_sph");
+    CrossPhaseParameters par = wendland;
+    par.riemann_dissipation = riemann;
+    par.rho0 = rho0;
+    const double rho0_c0 = riemann ? rho0 * c0 : 0.0;
+    const CrossPhaseForces out = compute_cross_phase_forces(F, S, par);
+    const WallTerms expected = moving_wall_terms(F, x_s, v_s, V_s, h_s, g, kWendlandC2, rho0_c0);
+    const WallTerms cubic = moving_wall_terms(F, x_s, v_s, V_s, h_s, g, kCubicSpline, rho0_c0);
+    ASSERT_GT(expected.pairs, 8);
+    ASSERT_LT(expected.pairs, static_cast<long>(F.size()));  // the support is felt
+    EXPECT_EQ(out.pairs, expected.pairs);
+    EXPECT_NEAR(out.wall_pressure[0], expected.P_w, 1e-12 * expected.P_w);
+    EXPECT_GT(std::abs(cubic.P_w - expected.P_w), 1e-4 * expected.P_w);
+    for (std::size_t f = 0; f < F.size(); ++f) {
+      SCOPED_TRACE("water particle " + std::to_string(f));
+      const double a = expected.a_f[f].norm(), drho = std::abs(expected.drho_f[f]);
+      EXPECT_LE((out.fluid_a[f] - expected.a_f[f]).norm(), 1e-12 * a);
+      EXPECT_NEAR(out.fluid_drho[f], expected.drho_f[f], 1e-12 * drho);
+      if (a == 0.0) continue;
+      EXPECT_GT((cubic.a_f[f] - expected.a_f[f]).norm(), 1e-3 * a);
+      EXPECT_GT(std::abs(cubic.drho_f[f] - expected.drho_f[f]), 1e-3 * drho);
+    }
+  }
+}
+
+// The coupler takes the water's kernel from the case, as the fluid reads it,
+// for the moving wall only: the stress sum meets the solid's own (cubic
+// spline) pairs.
+TEST(CrossPhaseForces, TheCaseKernelReachesTheMovingWall) {
+  const std::string plate = std::string(COSPH_SOURCE_DIR) + "/cases/elastic_plate.pbtxt";
+  const auto kernel = [&](const std::vector<std::string>& settings) {
+    return cosph::coupler::read_coupler_settings(sph::load_case(plate, settings))
+        .cross_phase.kernel;
+  };
+  using sph::kernel::Shape;
+  EXPECT_EQ(kernel({}), Shape::cubic_spline);
+  EXPECT_EQ(kernel({"fluid.kernel=cubic_spline"}), Shape::cubic_spline);
+  EXPECT_EQ(kernel({"fluid.kernel=wendland_c2", "fluid.h_factor=2.0"}), Shape::wendland_c2);
+  EXPECT_EQ(
+      kernel({"fluid.kernel=wendland_c2", "fluid.h_factor=2.0", "coupling.interface=stress_sum"}),
+      Shape::cubic_spline);
+  EXPECT_THROW(kernel({"fluid.kernel=quintic"}), sph::ConfigError);
 }
 
 // The study's rule has no share in the continuity: nothing is sent.
