@@ -9,7 +9,9 @@ validate_elastic_plate.py, validate_shell_coupled.py), and
 docs/figures/speed_accuracy_exact.png, the scenes with an exact reference
 (points marked "exact": the plate in vacuum, validate_shell.py and
 continuum_plate_in_vacuum.py; the oscillating plate,
-validate_oscillating_plate.py), where a costlier run must be more accurate.
+validate_oscillating_plate.py; the hydrostatic plate,
+validate_hydrostatic_plate.py; the wave flume, validate_wave_flume.py
+--points), where a costlier run must be more accurate.
 The table of all runs is docs/results/speed_accuracy.md.
 Pick the cheapest run that meets the accuracy you need.
 
@@ -17,13 +19,14 @@ usage: /usr/bin/python3 scripts/speed_accuracy.py
 """
 import glob
 import json
+import math
 import os
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.ticker import FormatStrFormatter, NullFormatter  # noqa: E402
+from matplotlib.ticker import FormatStrFormatter, FuncFormatter, NullFormatter  # noqa: E402
 
 import cosph_results as cr  # noqa: E402
 
@@ -39,12 +42,23 @@ def by_scene(points):
     return scenes
 
 
+def some_minor_labels(value, _position):
+    """A minor tick's label at 2, 3 and 5 times a power of ten only: all eight
+    crowd at the top of a decade."""
+    mantissa = value / 10 ** math.floor(math.log10(value) + 1e-9)
+    return f"{value:g}" if round(mantissa) in (2, 3, 5) else ""
+
+
 def draw(scenes, path, xlabel, legend_of=None):
-    """One log-log panel per scene. With legend_of (series -> legend), series
-    with the same legend share a colour across panels."""
+    """One log-log panel per scene, two panels a row. With legend_of (series
+    -> legend), series with the same legend share a colour across panels."""
     colours = {}
-    fig, axes = plt.subplots(1, len(scenes), figsize=(5.5 * len(scenes), 4.2), squeeze=False)
-    for ax, (error_name, series) in zip(axes[0], scenes.items()):
+    columns = min(len(scenes), 2)
+    rows = -(-len(scenes) // columns)
+    fig, axes = plt.subplots(rows, columns, figsize=(5.5 * columns, 4.2 * rows), squeeze=False)
+    for ax in axes.flat[len(scenes):]:
+        ax.set_visible(False)
+    for ax, (error_name, series) in zip(axes.flat, scenes.items()):
         if legend_of is None:
             colours = {}
         for name, runs in series.items():
@@ -58,11 +72,12 @@ def draw(scenes, path, xlabel, legend_of=None):
         # "scene: error (unit)" reads as the panel's title and its axis.
         title, _, ylabel = error_name.rpartition(": ")
         ax.set(xscale="log", yscale="log", xlabel=xlabel, ylabel=ylabel, title=title)
-        ax.yaxis.set_major_formatter(FormatStrFormatter("%g"))
-        low, high = ax.get_ylim()
-        # Minor labels only where the axis spans too little for major ones;
-        # over decades they overlap.
-        ax.yaxis.set_minor_formatter(FormatStrFormatter("%g") if high / low < 30 else
+        for axis, (low, high) in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
+            axis.set_major_formatter(FormatStrFormatter("%g"))
+            # Minor labels only where the axis spans too little for major
+            # ones, fewer the more it spans; over decades they overlap.
+            axis.set_minor_formatter(FormatStrFormatter("%g") if high / low < 3 else
+                                     FuncFormatter(some_minor_labels) if high / low < 30 else
                                      NullFormatter())
         ax.legend(fontsize=8)
     fig.tight_layout()
@@ -110,15 +125,37 @@ def main():
                             "reach): dam break (`validate_dam_break.py`), RMS relative error "
                             "of the front (T <= 3.1); elastic plate (`validate_elastic_plate.py`, "
                             "`validate_shell_coupled.py`), RMS error of the tip's x displacement "
-                            "over the experimental points; coupled runs on 2 cores. Two scenes "
+                            "over the experimental points; coupled runs on 2 cores. Four scenes "
                             "with exact references, where a finer or costlier run must be more "
                             "accurate: the Antoci plate in vacuum (`validate_shell.py`, "
                             "`continuum_plate_in_vacuum.py`), |period error| against the "
                             "Timoshenko beam; the oscillating plate "
                             "(`validate_oscillating_plate.py`), |period error| against "
-                            "thin-plate theory; solids alone on one thread. The figures plot "
+                            "thin-plate theory, solids alone on one thread; and two with water, "
+                            "each solver on one thread (the hydrostatic plate's three processes "
+                            "share the 2 cores): the hydrostatic plate "
+                            "(`validate_hydrostatic_plate.py`), |error| of the settled mid-span "
+                            "deflection against the Timoshenko beam, the shell with the water "
+                            "refined, the plate refined, or both (the run: the water's spacing "
+                            "+ the plate's, span L over the particles along); the wave flume "
+                            "(`validate_wave_flume.py --points`), |error| of the first-order "
+                            "wave height 1 m from the piston against Biesel's linear wave-maker "
+                            "theory, the fluid alone. On the hydrostatic plate each line falls "
+                            "with cost, but across lines a costlier run is not always more "
+                            "accurate: below a few tenths of a per cent the error is within the "
+                            "uncertainty of its own settled reading (the spread over windows in "
+                            "docs/results/hydrostatic_plate.md; the deflection swings about its "
+                            "static value with the water column's acoustic mode), and the coarse "
+                            "run comes that close because the coarse water's error (a load too "
+                            "high, not yet settled) and the coarse plate's (the shell too stiff) "
+                            "have opposite signs. On the wave flume the error falls with cost, "
+                            "but slowly: it is about the height the waves lose over a metre "
+                            "of flume (`validate_wave_flume.py`'s H at 2 m / H at 1 m), which "
+                            "SPH's damping sets and refinement reduces only slowly. "
+                            "The figures plot "
                             "the wall time; the CPU time (the solver's, where the script "
-                            "recorded it) is given too, since wall times come from a shared "
+                            "recorded it; the coupled runs': all their processes') is given too, "
+                            "since wall times come from a shared "
                             "machine: runs made at the same time slow each other.")
     print(open(os.path.join(cr.RESULTS, "speed_accuracy.md")).read())
 

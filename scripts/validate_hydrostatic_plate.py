@@ -8,7 +8,12 @@ with the solid model and the water and plate spacings of RUNS, reads the
 settled deflection (the mean over the last two periods of the water column's
 acoustic mode, scripts/hydrostatic_plate.py, where the theory is), and writes
 docs/figures/hydrostatic_plate.png (the deflection against time, the theory
-marked; the error against the spacing) and docs/results/hydrostatic_plate.md.
+marked; the error against the spacing), docs/results/hydrostatic_plate.md and,
+for scripts/speed_accuracy.py, docs/results/hydrostatic_plate_points.json:
+the shell runs of the error panel that have a run in out/validation/ (run now
+or reused, not kept from the table), each with its wall time and the CPU time
+of its three processes. Every run sets run.threads=1, so that its wall time
+compares with the other exact references' (solids alone on one thread).
 
 The Jaumann runs take 6 and 21 minutes and run only when asked for (--only):
 without a run of its own in out/validation/, a Jaumann row is kept from the
@@ -53,12 +58,15 @@ RUNS = [("shell, coarse", "shell_coarse", SHELL, 0.04, 0.03125, []),
          ["solid.model=jaumann", "coupling.max_substeps=0"])]
 RUN_BY_DEFAULT = {SHELL}
 # The figure's error panel: its series, and which spacing each run is
-# plotted against.
+# plotted against. The shell's series are also the speed-accuracy chart's.
 WATER_REFINED = "shell: the water refined (plate L/64)"
 PLATE_REFINED = "shell: the plate refined (water 20 mm)"
+BOTH_REFINED = "shell: both refined"
 JAUMANN_REFINED = "Jaumann: both refined"
-SERIES = {"shell_coarse_water": [(WATER_REFINED, "water")],
-          "shell_default": [(WATER_REFINED, "water"), (PLATE_REFINED, "plate")],
+SERIES = {"shell_coarse": [(BOTH_REFINED, "water")],
+          "shell_coarse_water": [(WATER_REFINED, "water")],
+          "shell_default": [(WATER_REFINED, "water"), (PLATE_REFINED, "plate"),
+                            (BOTH_REFINED, "water")],
           "shell_fine_water": [(WATER_REFINED, "water")],
           "shell_coarse_plate": [(PLATE_REFINED, "plate")],
           "coarse": [(JAUMANN_REFINED, "plate")], "default": [(JAUMANN_REFINED, "plate")]}
@@ -70,7 +78,7 @@ HEADER = ["run", "solid", "water spacing (mm)", "plate spacing (mm)", "reached t
           "settled deflection (1e-5 m)", "error against Timoshenko", "against Euler-Bernoulli",
           "spread over windows", "water's force / rho g H L",
           "Timoshenko under that force (1e-5 m)",
-          "wall time (2 cores)", "failure"]
+          "wall time (2 cores)", "CPU time (3 processes)", "failure"]
 NOT_RERUN = "not rerun: kept from the earlier table"
 
 
@@ -101,6 +109,18 @@ def spacing_cells(p, model, dx_f, dx_s):
     return f"{1e3 * dx_f:g}", plate
 
 
+def speed_point(series, p, dx_f, dx_s, wall, cpu, error):
+    """A run for scripts/speed_accuracy.py: |error| against Timoshenko, the
+    exact static deflection of the shell's beam model."""
+    refined = series.split(": ")[1].split(" (")[0].replace("the ", "")  # "water refined"
+    # The same label in every series: the case's point, shared, reads as one.
+    label = f"{1e3 * dx_f:g} mm + L/{p['span_L'] / dx_s:.0f}"  # the water's + the plate's
+    return {"series": f"hydrostatic plate, shell, {refined}", "label": label, "wall_s": wall,
+            "cpu_s": cpu, "error": 100 * abs(error),
+            "error_name": "hydrostatic plate: |deflection error| vs Timoshenko (%)",
+            "exact": True}
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--reuse", action="store_true",
@@ -114,7 +134,8 @@ def main():
     T = hp.column_period(p)
     fig, (ax, ax_conv) = plt.subplots(1, 2, figsize=(11, 4.2))
     earlier = earlier_rows()
-    rows, convergence = [], {WATER_REFINED: [], PLATE_REFINED: [], JAUMANN_REFINED: []}
+    rows, speed_points = [], []
+    convergence = {WATER_REFINED: [], PLATE_REFINED: [], BOTH_REFINED: [], JAUMANN_REFINED: []}
     for n, (label, suffix, model, dx_f, dx_s, extra) in enumerate(RUNS):
         out = os.path.join(cr.REPO, "out", "validation", f"hydrostatic_plate_{suffix}")
         water_cell, plate_cell = spacing_cells(p, model, dx_f, dx_s)
@@ -123,7 +144,8 @@ def main():
         if not args.reuse and asked:
             wall, failure = cr.run_or_reuse(
                 "hydrostatic_plate", out,
-                [f"fluid.spacing={dx_f}", f"solid.spacing={dx_s}"] + extra, False)
+                [f"fluid.spacing={dx_f}", f"solid.spacing={dx_s}", "run.threads=1"] + extra,
+                False)
         elif os.path.exists(path):
             wall, failure = cr.run_or_reuse("hydrostatic_plate", out, [], True)
         else:
@@ -139,6 +161,7 @@ def main():
             for name, spacing in SERIES.get(suffix, []):
                 convergence[name].append((dx_f if spacing == "water" else dx_s, abs(error)))
             continue
+        cpu = sum(cr.logged_cpu_times(out).values()) or None
         series = cr.read_csv(path)
         t = series["t"]
         w = hp.settled_deflection(t, series["tip_dy"])
@@ -158,6 +181,8 @@ def main():
         if np.isfinite(w):
             for name, spacing in SERIES.get(suffix, []):
                 convergence[name].append((dx_f if spacing == "water" else dx_s, abs(error)))
+                if wall is not None and not failure:
+                    speed_points.append(speed_point(name, p, dx_f, dx_s, wall, cpu, error))
         # How well the reading is settled: the same mean over each two-period
         # window that starts a whole period or more after the load, the
         # largest less the smallest, against w_T.
@@ -171,6 +196,7 @@ def main():
                    if np.isfinite(w) else ["-"] * 6)
         rows.append([label, model, water_cell, plate_cell, f"{t[-1]:.3f}"] + settled +
                     [f"{wall:.0f} s" if wall is not None else "-",
+                     f"{cpu:.0f} s" if cpu is not None else "-",
                      "" if not failure else failure.splitlines()[0]])
     ax.axhline(1e5 * w_t, color="k", lw=1, label=f"Timoshenko {1e5 * w_t:.2f}e-5 m")
     ax.axhline(1e5 * w_eb, color="k", ls=":", lw=1,
@@ -178,12 +204,14 @@ def main():
     ax.set(xlabel="t (s)", ylabel="mid-span deflection (1e-5 m)",
            title="Water column on a clamped plate")
     ax.legend(fontsize=7, loc="lower right")
-    for name, marker in ((WATER_REFINED, "o-"), (PLATE_REFINED, "^-"), (JAUMANN_REFINED, "s-")):
+    for name, marker in ((WATER_REFINED, "o-"), (PLATE_REFINED, "^-"), (BOTH_REFINED, "v-"),
+                         (JAUMANN_REFINED, "s-")):
         points = sorted(convergence[name])
         if points:
             ax_conv.loglog([x for x, _ in points], [e for _, e in points], marker, label=name)
     ax_conv.axhline(GOAL, color="0.5", ls="--", label="goal at the default: 2 %")
-    ax_conv.set(xlabel="the refined spacing (m)", ylabel="|error| against Timoshenko",
+    ax_conv.set(xlabel="the refined spacing (m; both refined: the water's)",
+                ylabel="|error| against Timoshenko",
                 title="Convergence")
     ax_conv.legend(fontsize=7)
     fig.tight_layout()
@@ -208,7 +236,10 @@ def main():
                  "multi-rate, the shell's windows bound by its damping (docs/auto_substeps.md), "
                  "the Jaumann solid's at 32 steps. Rows marked not rerun were run before that "
                  "bound (the shell's) or are kept from an earlier table (the Jaumann solid's); "
-                 "wall times on the shared machine.")
+                 "wall times on the shared machine, each solver on one thread "
+                 "(run.threads=1; the rows kept from earlier tables: as many as the solver "
+                 "chose), the CPU time the coupler's, the fluid's and the solid's together.")
+    cr.write_points("hydrostatic_plate", speed_points)
     print(open(os.path.join(cr.RESULTS, "hydrostatic_plate.md")).read())
 
 

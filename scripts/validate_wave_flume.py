@@ -30,9 +30,16 @@ the settings the case had before (cubic spline, h = 1.3 dx, artificial
 viscosity 0.02) at the default spacing, over the first window only.
 Writes docs/figures/wave_flume.png and docs/results/wave_flume.md.
 
+--points instead runs the speed-accuracy series: T = 1 s over the first
+window only, on one thread (run.threads=1, so that its wall time compares
+with the other exact references'), at the spacings of POINT_SPACINGS, and
+writes docs/results/wave_flume_points.json (|height error| against Biesel,
+wall and CPU time) for scripts/speed_accuracy.py; the table and the figure
+are left as they are.
+
 usage: /usr/bin/python3 scripts/validate_wave_flume.py [--periods 1.0 1.3]
            [--spacings 0.02 0.01] [--finer 0.005] [--previous] [--no-reflection]
-           [--reuse]
+           [--reuse] [--points]
 """
 import argparse
 import glob
@@ -58,6 +65,12 @@ REFLECTION_PERIODS = 2  # the late window's length
 GOAL = 0.05
 PREVIOUS = {"kernel": "cubic_spline", "h_factor": 1.3, "artificial_viscosity": 0.02}
 PAIRING_STRIP = (1.5, 3.0)  # m
+# The speed-accuracy series: the table's spacings, 20 mm and the case's
+# 10 mm, with 25 and 12.5 mm between and beyond (they divide the depth). The
+# four take about six minutes on one thread; 6.25 mm would take twice that
+# again.
+POINT_PERIOD = 1.0  # s
+POINT_SPACINGS = (0.025, 0.02, 0.0125, 0.01)  # m
 
 
 def mean_nearest_distance(out, spacing):
@@ -84,7 +97,8 @@ def whole_periods(t_from, t_to, t_end, period):
 
 
 def measure(out, period, spacing, label, run_settings, reuse, reflection):
-    """One run: (table row, series, window, late window, H, error, theory, depth)."""
+    """One run: (table row, series, window, late window, H, error, theory, depth,
+    wall time)."""
     # The windows use the case's depth and Biesel's height for it: they are
     # travel times, which the few per cent of either do not move by a period.
     nominal = wt.biesel_height_over_stroke(period, DEPTH) * 2 * AMPLITUDE
@@ -133,7 +147,27 @@ def measure(out, period, spacing, label, run_settings, reuse, reflection):
             if late else "-"),
            f"{mean_nearest_distance(out, spacing):.2f}",
            int(series["water_particles"][0]), f"{wall:.0f} s" if wall else "-"]
-    return row, series, (t_from, t_to), late, height, error, theory, depth
+    return row, series, (t_from, t_to), late, height, error, theory, depth, wall
+
+
+def write_points(out, reuse):
+    """docs/results/wave_flume_points.json: the runs of POINT_SPACINGS."""
+    points = []
+    for spacing in POINT_SPACINGS:
+        run = os.path.join(out, f"T_{POINT_PERIOD:g}_dx_{spacing:g}")
+        row, *_, error, _theory, _depth, wall = measure(
+            run, POINT_PERIOD, spacing, "the case", ["run.threads=1"], reuse, False)
+        # The launcher's clocks, run now or reused: the same measure for each.
+        wall = cr.logged_wall_time(run) or wall
+        cpu = sum(cr.logged_cpu_times(run).values()) or None
+        points.append({"series": "wave flume, the case", "label": f"{1e3 * spacing:g} mm",
+                       "wall_s": wall, "cpu_s": cpu, "error": 100 * abs(error),
+                       "error_name": f"wave flume, T = {POINT_PERIOD:g} s: "
+                                     "|wave height error| vs Biesel (%)",
+                       "exact": True})
+        print(f"{1e3 * spacing:g} mm: error {100 * error:+.2f} %, H at 2 m / H at 1 m "
+              f"{row[12]}, wall {wall:.0f} s, CPU {cpu} s", flush=True)
+    print("wrote", cr.write_points("wave_flume", points))
 
 
 def main():
@@ -148,7 +182,12 @@ def main():
                         help="end the runs with the first window: no measured reflection")
     parser.add_argument("--out", default=os.path.join(cr.REPO, "out", "validation", "wave_flume"))
     parser.add_argument("--reuse", action="store_true", help="read the runs already in --out")
+    parser.add_argument("--points", action="store_true",
+                        help="run the speed-accuracy series only (into OUT/points)")
     args = parser.parse_args()
+    if args.points:
+        write_points(os.path.join(args.out, "points"), args.reuse)
+        return
 
     runs = [(dx, "the case", []) for dx in sorted(args.spacings, reverse=True)]
     finer = [(dx, "the case", []) for dx in sorted(args.finer, reverse=True)]
@@ -163,7 +202,7 @@ def main():
         for spacing, label, settings in runs + (finer if period == args.periods[0] else []):
             name = f"T_{period:g}_dx_{spacing:g}" + ("_previous" if settings else "")
             # The previous settings are there for the height only.
-            row, series, (t_from, t_to), late, height, error, theory, depth = measure(
+            row, series, (t_from, t_to), late, height, error, theory, depth, _ = measure(
                 os.path.join(args.out, name), period, spacing, label, settings, args.reuse,
                 args.reflection and not settings)
             late_window = late or late_window
