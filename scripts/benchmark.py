@@ -8,7 +8,7 @@ test suite.
 
 usage: /usr/bin/python3 scripts/benchmark.py [--steps N] [--repeat R]
        /usr/bin/python3 scripts/benchmark.py --busy [--repeat R] [--end-time T] [--candidates]
-                                                [--tbb-build DIR]"""
+                                                [--other-build DIR]"""
 import argparse
 import math
 import os
@@ -32,13 +32,13 @@ def main():
                         help="--busy: simulated time of each run (s)")
     parser.add_argument("--candidates", action="store_true",
                         help="--busy: also the runtimes the default was chosen against")
-    parser.add_argument("--tbb-build", metavar="DIR",
-                        help="--busy: also the dam break on DIR, a build with "
-                             "-DCOSPH_PARALLEL=tbb, against OpenMP, whole runs and in "
-                             "cosph-bench (docs/results/parallel_runtimes.md)")
+    parser.add_argument("--other-build", metavar="DIR",
+                        help="--busy: also the dam break on DIR, a build with the other "
+                             "runtime of the solvers' loops (-DCOSPH_PARALLEL=openmp or tbb), "
+                             "whole runs and in cosph-bench (docs/results/parallel_runtimes.md)")
     args = parser.parse_args()
     if args.busy:
-        busy_machine.run(args.repeat or 3, args.end_time, args.candidates, args.tbb_build)
+        busy_machine.run(args.repeat or 3, args.end_time, args.candidates, args.other_build)
         return
     args.repeat = args.repeat or 7
     bin_dir = os.environ.get("COSPH_BIN", os.path.join(cr.REPO, "build", "bin"))

@@ -2,9 +2,9 @@
 the launcher on a quiet machine and with one competing CPU-bound process
 (`sh -c 'while :; do :; done'`, started and stopped here), side by side and
 alternating, and their ratio against the quiet one-thread run. Writes
-docs/results/busy_machine.md. With a build of -DCOSPH_PARALLEL=tbb (--tbb-build),
-the dam break's rows on oneTBB too, and cosph-bench on both builds
-(docs/results/parallel_runtimes.md)."""
+docs/results/busy_machine.md. With a build of the other runtime of the solvers'
+loops (--other-build: -DCOSPH_PARALLEL=openmp or tbb), the dam break's rows on it
+too, and cosph-bench on both builds (docs/results/parallel_runtimes.md)."""
 import contextlib
 import os
 import resource
@@ -34,35 +34,38 @@ VARIANTS = [
 ]
 CANDIDATES = [
     ("busy, two threads always", True, ["run.threads=2"], [], {}),
-    ("busy, two threads, OMP_WAIT_POLICY=passive", True, ["run.threads=2"], [],
-     {"OMP_WAIT_POLICY": "passive"}),
     ("busy, one thread", True, ["run.threads=1"], [], {}),
     ("busy, default, not pinned (--no-pin)", True, [], ["--no-pin"], {}),
     ("quiet, default, not pinned (--no-pin)", False, [], ["--no-pin"], {}),
 ]
 
-# With --tbb-build: the rows that compare OpenMP with oneTBB on the dam break,
+# With --other-build: the rows that compare the two runtimes on the dam break,
 # two threads asked for rather than left to the default, which a machine
-# loaded by others turns into one. The oneTBB rows run the other build's
-# executables (COSPH_BIN), set in tbb_rows.
-TBB = "oneTBB build: "
-OPENMP_TWO_THREADS = [
+# loaded by others turns into one. The other build's rows run its
+# executables (COSPH_BIN), set in other_rows, and are labelled with its runtime.
+DEFAULT_TWO_THREADS = [
     ("quiet, two threads", False, ["run.threads=2"], [], {}),
     CANDIDATES[0],  # busy, two threads always
 ]
-TBB_ROWS = [
-    (TBB + "quiet, one thread", False, ["run.threads=1"], [], {}),
-    (TBB + "quiet, two threads", False, ["run.threads=2"], [], {}),
-    (TBB + "busy, default", True, [], [], {}),
-    (TBB + "busy, two threads always", True, ["run.threads=2"], [], {}),
+OTHER_ROWS = [
+    ("quiet, one thread", False, ["run.threads=1"], [], {}),
+    ("quiet, two threads", False, ["run.threads=2"], [], {}),
+    ("busy, default", True, [], [], {}),
+    ("busy, two threads always", True, ["run.threads=2"], [], {}),
 ]
 
 
-def tbb_rows(tbb_build):
-    """The rows that compare the runtimes, the oneTBB ones on tbb_build's executables."""
-    env = {"COSPH_BIN": os.path.join(os.path.abspath(tbb_build), "bin")}
-    return OPENMP_TWO_THREADS + [(label, busy, extra, options, {**environment, **env})
-                                 for label, busy, extra, options, environment in TBB_ROWS]
+def other_prefix(other_build):
+    """The label before the other build's rows: its runtime's name."""
+    return cr.parallel_runtime(os.path.join(os.path.abspath(other_build), "bin")) + " build: "
+
+
+def other_rows(other_build):
+    """The rows that compare the runtimes, the other's on other_build's executables."""
+    env = {"COSPH_BIN": os.path.join(os.path.abspath(other_build), "bin")}
+    prefix = other_prefix(other_build)
+    return DEFAULT_TWO_THREADS + [(prefix + label, busy, extra, options, {**environment, **env})
+                                  for label, busy, extra, options, environment in OTHER_ROWS]
 
 
 @contextlib.contextmanager
@@ -106,7 +109,7 @@ def load():
         return float(loadavg.read().split()[0])
 
 
-def measure(repeat, end_time, candidates, tbb_build=None):
+def measure(repeat, end_time, candidates, other_build=None):
     """{(scene, label): [wall seconds per run]}, {(scene, label): [CPU seconds
     per run]}, and the load averages seen."""
     variants = [REFERENCE] + VARIANTS + (CANDIDATES if candidates else [])
@@ -115,8 +118,8 @@ def measure(repeat, end_time, candidates, tbb_build=None):
         # The plate's candidates that only pin or unpin matter for; the dam
         # break runs one process, which the launcher never pins.
         chosen = [v for v in variants if case == "elastic_plate" or not v[3]]
-        if tbb_build and case == "dam_break":
-            chosen += [v for v in tbb_rows(tbb_build) if v[0] not in [c[0] for c in chosen]]
+        if other_build and case == "dam_break":
+            chosen += [v for v in other_rows(other_build) if v[0] not in [c[0] for c in chosen]]
         for _ in range(repeat):
             for label, busy, extra, options, env in chosen:
                 run_settings = settings + [f"run.end_time={end_time}"] + extra
@@ -150,28 +153,30 @@ def ratios(times, scene, label):
     return [t1 / t for t1, t in zip(times[(scene, REFERENCE[0])], times[(scene, label)])]
 
 
-def runtimes_compared(times):
-    """What the oneTBB rows say against OpenMP's, or nothing without them."""
+def runtimes_compared(times, other_build):
+    """What the other runtime's rows say against the default's, or nothing without them."""
     scene = SCENES[0][0]
-    if (scene, TBB + "busy, two threads always") not in times:
+    if not other_build:
         return ""
+    prefix = other_prefix(other_build)
+    other, default = prefix.split(" build: ")[0], cr.parallel_runtime(cr.build_bin())
 
     def ratio(label, reference=REFERENCE[0]):
         return statistics.median(t1 / t for t1, t in zip(times[(scene, reference)],
                                                          times[(scene, label)]))
 
     return (
-        f" oneTBB (a build with -DCOSPH_PARALLEL=tbb, the rows \"{TBB}...\"; its loops cut "
-        "into chunks that idle threads take from the others), on the dam break: busy with two "
-        f"threads always {ratio(TBB + 'busy, two threads always'):.2f} of OpenMP's quiet "
-        f"one-thread speed (OpenMP's two threads always {ratio(CANDIDATES[0][0]):.2f}, its "
-        f"default on a busy machine {ratio('busy, default'):.2f}); quiet, two threads "
-        f"{ratio(TBB + 'quiet, two threads', TBB + 'quiet, one thread'):.2f} times its own one "
-        f"thread (OpenMP {ratio('quiet, two threads'):.2f}); its one thread "
-        f"{ratio(TBB + 'quiet, one thread'):.2f} of OpenMP's.")
+        f" {other} (the rows \"{prefix}...\", a build with the other runtime of the "
+        f"solvers' loops), on the dam break: busy with two threads always "
+        f"{ratio(prefix + 'busy, two threads always'):.2f} of {default}'s quiet one-thread "
+        f"speed ({default}'s two threads always {ratio(CANDIDATES[0][0]):.2f}, its default on a "
+        f"busy machine {ratio('busy, default'):.2f}); quiet, two threads "
+        f"{ratio(prefix + 'quiet, two threads', prefix + 'quiet, one thread'):.2f} times its own "
+        f"one thread ({default} {ratio('quiet, two threads'):.2f}); its one thread "
+        f"{ratio(prefix + 'quiet, one thread'):.2f} of {default}'s.")
 
 
-def write(times, cpu, loads, repeat, end_time):
+def write(times, cpu, loads, repeat, end_time, other_build=None):
     rows = []
     for scene, _, _ in SCENES:
         for (row_scene, label), seconds in times.items():
@@ -199,7 +204,7 @@ def write(times, cpu, loads, repeat, end_time):
         "of quiet one-thread speed; quiet, two threads at least 1.8 times one (the fluid's "
         "particle-steps on the benchmark's scenes are in the table above). Measured: "
         + "; ".join(f"{scene}, busy {busy[scene]:.2f}, quiet default {quiet[scene]:.2f}"
-                    for scene in busy) + "." + runtimes_compared(times) + "\n\n"
+                    for scene in busy) + "." + runtimes_compared(times, other_build) + "\n\n"
         "What a busy machine leaves. Beside one CPU-bound process on two cores, a scheduler "
         "that shares the cores fairly among runnable threads gives a run that keeps u cores "
         "busy on a quiet machine at most 2 / (1 + u) of its quiet speed: while it has one "
@@ -211,18 +216,20 @@ def write(times, cpu, loads, repeat, end_time):
         + ". A coupled run keeps both its solvers busy at once, so the 0.8 target lies above "
         "what fair sharing leaves it once u passes 1.5; only a run that holds the scheduler's "
         "placement (pinning, below) can go beyond it.\n\n"
-        "Why the default is what it is. Every parallel loop of the solvers ends at a barrier "
-        "that waits for its slowest thread. With another process on one of two cores, the "
-        "thread there runs only in the scheduler's time slices, and every loop waits for one: "
-        "two threads always (the rows so named, with OpenMP's default waits and with passive "
-        "ones) run many times slower than one. A solver therefore takes no more threads than "
-        "the cores other processes leave free (from the machine's busy time in /proc/stat less "
-        "its own, a core counting as free while others use less than a quarter of it; as it "
-        "starts, from the threads runnable at that instant), and looks again every second; "
-        "results are the same bits on any thread count. On a busy "
-        "machine a solver then runs one thread, which has no barrier to wait at (the row "
-        "\"busy, one thread\" is what it reaches). oneTBB, a work-stealing runtime, "
-        "is measured against OpenMP in docs/performance.md (\"OpenMP or oneTBB\"). In a "
+        "Why the default is what it is. The solvers' loops run on "
+        f"{cr.parallel_runtime(cr.build_bin())} here. Under OpenMP every loop ends at a barrier "
+        "that waits for each thread's share: with another process on one of two cores, the "
+        "thread there runs only in the scheduler's time slices, every loop waits for one, and "
+        "two threads always ran many times slower than one (OpenMP's rows \"busy, two threads "
+        "always\"). Under oneTBB a loop is cut into chunks that idle threads take from the "
+        "others, so a thread that lost its core holds a loop up by at most the chunk it is "
+        "working on. With either, a solver takes no more threads than the cores other "
+        "processes leave free (from the machine's busy time in /proc/stat less its own, a core "
+        "counting as free while others use less than a quarter of it; as it starts, from the "
+        "least of a few readings of the threads runnable then), and looks again every second; "
+        "results are the same bits on any thread count and on either runtime. On a busy "
+        "machine a solver then runs one thread (the row \"busy, one thread\" is what it "
+        "reaches); docs/performance.md (\"OpenMP or oneTBB\") has why oneTBB is the default. In a "
         "multi-rate coupled run the launcher pins each solver to cores of its own, on a busy "
         "machine too: left to the scheduler (the row \"not pinned\"), both solvers can share "
         "one core while the outside job holds the other; pinned, the job shares a core with "
@@ -232,8 +239,8 @@ def write(times, cpu, loads, repeat, end_time):
                                            "range"], rows, preamble=preamble)
 
 
-def run(repeat, end_time, candidates, tbb_build=None):
-    times, cpu, loads = measure(repeat, end_time, candidates, tbb_build)
-    print(write(times, cpu, loads, repeat, end_time))
-    if tbb_build:
-        print(parallel_runtimes.run(repeat, tbb_build))
+def run(repeat, end_time, candidates, other_build=None):
+    times, cpu, loads = measure(repeat, end_time, candidates, other_build)
+    print(write(times, cpu, loads, repeat, end_time, other_build))
+    if other_build:
+        print(parallel_runtimes.run(repeat, other_build))

@@ -21,6 +21,19 @@ FIGURES = os.path.join(REPO, "docs", "figures")
 RESULTS = os.path.join(REPO, "docs", "results")
 
 
+def build_bin():
+    """The executables' folder: COSPH_BIN, or the release preset's build/bin."""
+    return os.environ.get("COSPH_BIN", os.path.join(REPO, "build", "bin"))
+
+
+def parallel_runtime(bin_dir):
+    """The runtime of the solvers' loops in the build of `bin_dir` ("oneTBB" or
+    "OpenMP"), from its CMakeCache.txt (COSPH_PARALLEL)."""
+    with open(os.path.join(os.path.dirname(os.path.abspath(bin_dir)), "CMakeCache.txt")) as cache:
+        value = re.search(r"^COSPH_PARALLEL:STRING=(\w+)", cache.read(), re.MULTILINE).group(1)
+    return {"tbb": "oneTBB", "openmp": "OpenMP"}[value]
+
+
 def read_csv(path):
     """Columns of a CSV with '#' comments and one header row, keyed by name.
 

@@ -7,7 +7,7 @@ packages=(
   build-essential cmake ccache pkg-config
   libzmq3-dev cppzmq-dev
   libprotobuf-dev protobuf-compiler
-  libeigen3-dev libhdf5-dev libgtest-dev
+  libeigen3-dev libhdf5-dev libgtest-dev libtbb-dev
   python3-numpy python3-matplotlib python3-h5py python3-meshio
   python3-pil  # coupler/cosph plot --movie writes a GIF with it when ffmpeg is absent
 )

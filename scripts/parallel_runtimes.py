@@ -1,8 +1,8 @@
-"""cosph-bench's fluid alone on the OpenMP build and on a build with
--DCOSPH_PARALLEL=tbb, side by side and alternating: one thread and two on a
-quiet machine, and two beside one competing CPU-bound process
-(busy_machine.busy_loop). Part of scripts/benchmark.py --busy --tbb-build DIR;
-writes docs/results/parallel_runtimes.md."""
+"""cosph-bench's fluid alone on an OpenMP build and on a oneTBB build (the
+default's and --other-build's, -DCOSPH_PARALLEL), side by side and alternating:
+one thread and two on a quiet machine, and two beside one competing CPU-bound
+process (busy_machine.busy_loop). Part of scripts/benchmark.py --busy
+--other-build DIR; writes docs/results/parallel_runtimes.md."""
 import os
 import statistics
 import subprocess
@@ -43,14 +43,40 @@ def measure(repeat, builds):
     return times, loads
 
 
-def run(repeat, tbb_build):
-    openmp_bin = os.environ.get("COSPH_BIN", os.path.join(cr.REPO, "build", "bin"))
-    builds = [("OpenMP", openmp_bin), ("oneTBB", os.path.join(os.path.abspath(tbb_build), "bin"))]
+# Stalls: quiet, two threads, this many more runs of each build in turn. This
+# virtual machine has spells in which one of two threads loses its core to the
+# host for a while; a run then takes up to twice its time.
+STALL_RUNS = 20
+STALL = 1.5  # a run this many times its build's median counts as stalled
+
+
+def stalls(builds):
+    """{runtime: [ms per step of each quiet two-thread run]}, the builds in turn."""
+    times = {}
+    for _ in range(STALL_RUNS):
+        for runtime, bin_dir in builds:
+            times.setdefault(runtime, []).append(ms_per_step(bin_dir, 2))
+    for runtime, ms in times.items():
+        print(f"cosph-bench: {runtime}, quiet, 2 threads, {STALL_RUNS} runs: "
+              f"{stalled(ms)} stalled", flush=True)
+    return times
+
+
+def stalled(ms):
+    """How many runs took more than STALL times the median."""
+    return sum(t > STALL * statistics.median(ms) for t in ms)
+
+
+def run(repeat, other_build):
+    bins = [cr.build_bin(), os.path.join(os.path.abspath(other_build), "bin")]
+    builds = sorted((cr.parallel_runtime(bin_dir), bin_dir) for bin_dir in bins)  # OpenMP first
+    if [runtime for runtime, _ in builds] != ["OpenMP", "oneTBB"]:
+        raise SystemExit(f"--other-build {other_build}: the two builds have the same runtime")
     times, loads = measure(repeat, builds)
-    return write(times, loads, repeat)
+    return write(times, loads, repeat, stalls(builds))
 
 
-def write(times, loads, repeat):
+def write(times, loads, repeat, stall_times):
     reference = times[("OpenMP",) + RUNS[0]]
 
     def against(key, base=reference):
@@ -72,9 +98,9 @@ def write(times, loads, repeat):
         return statistics.median(against((runtime, "busy", 2)))
 
     preamble = (
-        f"`scripts/benchmark.py --busy --tbb-build DIR` runs `cosph-bench --fluid --spacing "
+        f"`scripts/benchmark.py --busy --other-build DIR` runs `cosph-bench --fluid --spacing "
         f"{SPACING} --steps {STEPS}` (the dam break in process, 22 318 particles, time per step "
-        f"after a warm-up) on the OpenMP build and on DIR, built with -DCOSPH_PARALLEL=tbb "
+        f"after a warm-up) on an OpenMP build and a oneTBB one (-DCOSPH_PARALLEL) "
         f"({repeat} rounds, each running every row on both builds in turn, {os.cpu_count()} "
         f"cores; the load average before each run was {min(loads):.1f} to {max(loads):.1f}). "
         "\"Busy\": one competing `sh -c 'while :; do :; done'`. The ratio is OpenMP's quiet "
@@ -89,7 +115,14 @@ def write(times, loads, repeat):
         f"{paired(('oneTBB', 'busy', 2), ('OpenMP', 'busy', 1))}; busy, two threads, of "
         f"OpenMP's quiet one thread, OpenMP {busy_two('OpenMP'):.2f}, oneTBB "
         f"{busy_two('oneTBB'):.2f}, and OpenMP's fallback "
-        f"{statistics.median(against(('OpenMP', 'busy', 1))):.2f} (target 0.8).")
+        f"{statistics.median(against(('OpenMP', 'busy', 1))):.2f} (target 0.8). Stalls: "
+        f"{STALL_RUNS} more quiet two-thread runs of each build, in turn; a run over {STALL} "
+        "times its build's median counts as stalled: "
+        + ", ".join(f"{runtime} {stalled(ms)} (median {statistics.median(ms):.3f} ms, slowest "
+                    f"{max(ms):.3f} ms)" for runtime, ms in stall_times.items())
+        + ". Such stalls come in spells on this virtual machine, when a thread loses its core "
+        "to the host for a while: under OpenMP a loop then waits at its barrier for that "
+        "thread's share; under oneTBB the other thread takes its chunks.")
     return cr.write_table("parallel_runtimes", ["runtime", "machine", "threads",
                                                 "time per step (ms, median)", "range (ms)",
                                                 "OpenMP quiet one thread / this", "range"],
