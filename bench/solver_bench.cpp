@@ -164,7 +164,8 @@ int bench(int argc, char** argv) {
           "--spacing: that one spacing instead), and of the solid (--fluid: not; --solid: the\n"
           "solid only), on one thread and on all cores\n"
           "(--threads: on T only). --cpu: CPU time of the busiest thread instead of wall\n"
-          "time, for a shared machine (with OMP_WAIT_POLICY=passive on several threads). --sorts: "
+          "time, for a shared machine (several threads: the OpenMP build, "
+          "OMP_WAIT_POLICY=passive). --sorts: "
           "the fluid's neighbour re-sorts in the timed steps,\n"
           "after its rows. --set F=V: a setting of the dam break for the fluid's runs (as\n"
           "cosph run's; may be repeated). Not a test.\n");
@@ -174,6 +175,15 @@ int bench(int argc, char** argv) {
           "usage: cosph-bench [--steps N] [--quick | --largest] [--fluid | --solid] [--spacing DX] "
           "[--threads T] [--cpu] [--sorts] [--set F=V]");
   }
+#if COSPH_PARALLEL_TBB
+  // --cpu reads the CPU time of OpenMP's threads, and oneTBB's workers are
+  // other threads: on several threads it would time the main thread alone.
+  if (cpu_clock &&
+      std::any_of(thread_counts.begin(), thread_counts.end(), [](int t) { return t > 1; }))
+    throw sph::ConfigError(
+        "--cpu times each OpenMP thread; this build runs its loops on oneTBB, so "
+        "give --threads 1 with it, or build with -DCOSPH_PARALLEL=openmp");
+#endif
   const std::string case_path = std::string(COSPH_SOURCE_DIR) + "/cases/dam_break.pbtxt";
   if (quick && spacings.size() > 1) spacings.pop_back();
   if (largest) spacings = {spacings.back()};
