@@ -19,10 +19,7 @@ scripts/speed_accuracy.py.
 usage: /usr/bin/python3 scripts/continuum_plate_in_vacuum.py [--out DIR] [--reuse] [--bin DIR]
 """
 import argparse
-import json
 import pathlib
-import subprocess
-import time
 
 import cosph_results as cr
 import validate_oscillating_plate as oscillating_plate
@@ -62,19 +59,10 @@ def plate_settings(across):
 
 def run(binary, settings, out, reuse):
     """(wall s, CPU s) of one run, or those recorded by its earlier run with --reuse."""
-    times = out / "times.json"
-    if reuse and times.exists():
-        recorded = json.loads(times.read_text())
-        return recorded["wall_s"], recorded["cpu_s"]
-    command = [str(binary), "--case", str(CASE), "--out", str(out)]
+    command = [binary, "--case", CASE, "--out", out]
     for setting in settings:
         command += ["--set", setting]
-    print("running:", " ".join(command), flush=True)
-    start, cpu_start = time.monotonic(), cr.children_cpu_seconds()
-    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
-    wall, cpu = time.monotonic() - start, cr.children_cpu_seconds() - cpu_start
-    times.write_text(json.dumps({"wall_s": wall, "cpu_s": cpu}) + "\n")
-    return wall, cpu
+    return cr.timed_run(command, str(out), reuse)
 
 
 def main():

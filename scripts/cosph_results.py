@@ -96,6 +96,32 @@ def children_cpu_seconds():
     return usage.ru_utime + usage.ru_stime
 
 
+def timed_run(command, out_dir, reuse=False):
+    """Runs COMMAND (a solver alone, its output into OUT_DIR) and returns its
+    (wall s, CPU s), which it records in OUT_DIR; with REUSE and a record
+    there, returns the recorded times without running (CPU None if an older
+    run recorded none)."""
+    wall_file = os.path.join(out_dir, "wall_time.txt")
+    cpu_file = os.path.join(out_dir, "cpu_time.txt")
+    if reuse and os.path.exists(wall_file):
+        print("reusing:", out_dir, flush=True)
+        with open(wall_file) as wall_text:
+            wall = float(wall_text.read())
+        if not os.path.exists(cpu_file):
+            return wall, None
+        with open(cpu_file) as cpu_text:
+            return wall, float(cpu_text.read())
+    print("running:", " ".join(str(part) for part in command), flush=True)
+    start, cpu_start = time.monotonic(), children_cpu_seconds()
+    subprocess.run([str(part) for part in command], check=True, stdout=subprocess.DEVNULL)
+    wall, cpu = time.monotonic() - start, children_cpu_seconds() - cpu_start
+    with open(wall_file, "w") as wall_text:
+        wall_text.write(f"{wall}\n")
+    with open(cpu_file, "w") as cpu_text:
+        cpu_text.write(f"{cpu}\n")
+    return wall, cpu
+
+
 def run_or_reuse(case, out_dir, settings, reuse):
     """Runs a case into OUT_DIR, or with REUSE takes its earlier run there;
     returns (wall time in s or None, the first error a process reported or "").

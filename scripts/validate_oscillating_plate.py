@@ -26,9 +26,7 @@ import argparse
 import math
 import pathlib
 import re
-import subprocess
 import sys
-import time
 
 import h5py
 import numpy as np
@@ -134,18 +132,7 @@ def run(across, out_dir, end_time, solver, model, alpha=None, gradient=None):
         command += ["--set", f"solid.velocity_gradient={gradient}"]
     if end_time:
         command += ["--set", f"run.end_time={end_time}"]
-    print("running:", " ".join(command), flush=True)
-    wall_file, cpu_file = out / "wall_time.txt", out / "cpu_time.txt"
-    if REUSE and wall_file.exists():
-        print("reusing:", out, flush=True)
-        wall = float(wall_file.read_text())
-        cpu = float(cpu_file.read_text()) if cpu_file.exists() else None
-    else:
-        start, cpu_start = time.monotonic(), cr.children_cpu_seconds()
-        subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
-        wall, cpu = time.monotonic() - start, cr.children_cpu_seconds() - cpu_start
-        wall_file.write_text(f"{wall}\n")
-        cpu_file.write_text(f"{cpu}\n")
+    wall, cpu = cr.timed_run(command, str(out), REUSE)
     series = read_timeseries(out / "timeseries.csv")
     with open(out / "solid.xdmf") as f:
         particles = int(f.read().split('Dimensions="')[1].split()[0])

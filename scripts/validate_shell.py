@@ -20,10 +20,8 @@ usage: scripts/validate_shell.py [--bin DIR]
 import argparse
 import math
 import pathlib
-import subprocess
 import sys
 import tempfile
-import time
 
 import numpy as np
 import matplotlib
@@ -99,12 +97,10 @@ def run(binary, n, out):
     settings = [f"solid.spacing={dx!r}", f"solid.body[0].min.x={-4 * dx!r}",
                 f"solid.clamp[0].min.x={-4 * dx!r}", "run.end_time=0.25",
                 "run.snapshot_interval=1"]
-    command = [str(binary), "--case", str(CASE), "--out", str(out)]
+    command = [binary, "--case", CASE, "--out", out]
     for s in settings:
         command += ["--set", s]
-    start, cpu_start = time.monotonic(), cr.children_cpu_seconds()
-    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
-    wall, cpu = time.monotonic() - start, cr.children_cpu_seconds() - cpu_start
+    wall, cpu = cr.timed_run(command, str(out))
     period, t, y = tip_period(out / "timeseries.csv", f"n = {n}")
     return period, t, y, wall, cpu
 
