@@ -80,7 +80,7 @@ Participant::~Participant() = default;
 sph::Region Participant::connect(PhaseKind phase, const std::string& solver_name,
                                  std::size_t particle_count, double max_smoothing_length,
                                  const sph::Region& bounds, long resumed_step, bool undamped_modes,
-                                 FastestMode fastest_mode) {
+                                 sph::DampedMode fastest_mode) {
   Envelope hello;
   Hello& h = *hello.mutable_hello();
   h.set_protocol_version(kProtocolVersion);

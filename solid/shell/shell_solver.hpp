@@ -33,6 +33,7 @@
 #include "solid_parameters.hpp"
 #include "sphcore/case_file.hpp"
 #include "sphcore/checkpoint.hpp"
+#include "sphcore/damped_mode.hpp"
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/particle_solver.hpp"
 #include "sphcore/snapshot_writer.hpp"
@@ -76,11 +77,7 @@ class ShellSolver : public sph::ParticleSolver<ShellSolver, ShellParticles, Soli
   // damping gives it (Hello fields fastest_mode_*): of all the shell's modes
   // the one with the least damping ratio per angular frequency
   // (shell_damping.hpp), from which the coupler bounds its windows.
-  struct DampedMode {
-    double angular_frequency;  // rad/s
-    double damping_ratio;
-  };
-  DampedMode fastest_mode() const {
+  sph::DampedMode fastest_mode() const {
     return {forces_.section.rotation_frequency(),
             forces_.damping.rotation_damping_ratio(forces_.section)};
   }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "participant/participant.hpp"
+#include "sphcore/damped_mode.hpp"
 #include "sphcore/gauge.hpp"
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/region.hpp"
@@ -88,15 +89,13 @@ bool has_undamped_modes(const Solver& solver) {
 // windows; one without the member states nothing.
 template <class Solver>
 concept ReportsFastestMode = requires(const Solver& solver) {
-  { solver.fastest_mode().angular_frequency } -> std::convertible_to<double>;
-  { solver.fastest_mode().damping_ratio } -> std::convertible_to<double>;
+  { solver.fastest_mode() } -> std::convertible_to<sph::DampedMode>;
 };
 
 template <class Solver>
-FastestMode fastest_mode_of(const Solver& solver) {
+sph::DampedMode fastest_mode_of(const Solver& solver) {
   if constexpr (ReportsFastestMode<Solver>) {
-    const auto mode = solver.fastest_mode();
-    return {mode.angular_frequency, mode.damping_ratio};
+    return solver.fastest_mode();
   } else {
     return {};
   }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "participant/curve_keys.hpp"
+#include "sphcore/damped_mode.hpp"
 #include "sphcore/gauge.hpp"
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/region.hpp"
@@ -16,13 +17,6 @@
 namespace cosph::coupling {
 
 enum class PhaseKind { fluid, solid };
-
-// A solid's fastest mode and the damping ratio its own dissipation gives it
-// (Hello fields fastest_mode_*, coupling.proto); 0, 0: not stated.
-struct FastestMode {
-  double angular_frequency = 0.0;  // rad/s
-  double damping_ratio = 0.0;
-};
 
 struct StepReply {
   double dt;                            // the common step to take next
@@ -55,7 +49,7 @@ class Participant {
   sph::Region connect(PhaseKind phase, const std::string& solver_name, std::size_t particle_count,
                       double max_smoothing_length, const sph::Region& bounds,
                       long resumed_step = -1, bool undamped_modes = false,
-                      FastestMode fastest_mode = {});
+                      sph::DampedMode fastest_mode = {});
 
   // One step's exchange, in two halves so that a solver can work between
   // them: its interface state out, then the coupler's answer for it in.
