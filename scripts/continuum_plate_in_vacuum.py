@@ -18,7 +18,6 @@ scripts/speed_accuracy.py.
 
 usage: /usr/bin/python3 scripts/continuum_plate_in_vacuum.py [--out DIR] [--reuse] [--bin DIR]
 """
-import argparse
 import pathlib
 
 import cosph_results as cr
@@ -66,11 +65,7 @@ def run(binary, settings, out, reuse):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=str(ROOT / "out" / "validation" /
-                                             "continuum_plate_in_vacuum"))
-    parser.add_argument("--reuse", action="store_true",
-                        help="read the runs already in --out instead of running them again")
+    parser = cr.script_arguments(__doc__, "validation/continuum_plate_in_vacuum")
     parser.add_argument("--bin", default=str(ROOT / "build" / "bin"))
     args = parser.parse_args()
     T_eb, T_timoshenko = shell.euler_bernoulli_period(), shell.timoshenko_period()

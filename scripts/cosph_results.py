@@ -3,6 +3,7 @@ running a case through the launcher, error norms, writing result tables.
 
 Run the scripts with /usr/bin/python3 (Debian's numpy, matplotlib, h5py).
 """
+import argparse
 import glob
 import json
 import os
@@ -19,6 +20,20 @@ REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 REFERENCE = os.path.join(REPO, "validation", "reference")
 FIGURES = os.path.join(REPO, "docs", "figures")
 RESULTS = os.path.join(REPO, "docs", "results")
+
+
+def script_arguments(doc, out=None):
+    """The scripts' common command line: the description (the first line of
+    the script's docstring DOC), --reuse, and with OUT (a folder under out/)
+    --out, where the runs go. Returns the parser, for the script's own
+    arguments."""
+    parser = argparse.ArgumentParser(description=doc.strip().splitlines()[0])
+    if out is not None:
+        parser.add_argument("--out", default=os.path.join(REPO, "out", out),
+                            help=f"where the runs go (default out/{out})")
+    parser.add_argument("--reuse", action="store_true",
+                        help="read the runs made before instead of running them again")
+    return parser
 
 
 def build_bin():

@@ -23,7 +23,6 @@ Writes docs/results/far_wall_profile.md and docs/figures/far_wall_profile.png.
 
 usage: /usr/bin/python3 scripts/far_wall_profile.py [--out DIR] [--reuse]
 """
-import argparse
 import os
 
 import h5py
@@ -132,9 +131,7 @@ def band_mean(profile, band):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=os.path.join(cr.REPO, "out", "far_wall_profile"))
-    parser.add_argument("--reuse", action="store_true", help="read the runs already in --out")
+    parser = cr.script_arguments(__doc__, "far_wall_profile")
     args = parser.parse_args()
 
     fig, (ax_p, ax_u) = plt.subplots(1, 2, figsize=(11, 5))

@@ -12,7 +12,6 @@ docs/results/modulus_sweep.md and docs/figures/modulus_sweep.png.
 
 usage: /usr/bin/python3 scripts/modulus_sweep.py [--reuse] [--only SUFFIX ...]
 """
-import argparse
 import os
 
 import matplotlib
@@ -40,8 +39,7 @@ def runs():
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--reuse", action="store_true")
+    parser = cr.script_arguments(__doc__)
     parser.add_argument("--only", action="append", default=[])
     args = parser.parse_args()
     peer = {axis: cr.reference(f"elastic_gate_num_sphinxsys_{axis}.csv") for axis in "xy"}

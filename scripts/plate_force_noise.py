@@ -12,7 +12,6 @@ tip's RMS error against Antoci et al. 2007. The case's walls are 8 mm deep,
 
 usage: /usr/bin/python3 scripts/plate_force_noise.py [--out DIR] [--reuse]
 """
-import argparse
 import os
 
 import cosph_results as cr
@@ -27,9 +26,7 @@ OPTIONS = [("delta_sph", "the case: delta-SPH, cubic spline, h = 1.3 dx", []),
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=os.path.join(cr.REPO, "out", "plate_force_noise"))
-    parser.add_argument("--reuse", action="store_true", help="read the runs already in --out")
+    parser = cr.script_arguments(__doc__, "plate_force_noise")
     args = parser.parse_args()
     rows = []
     for key, label, settings in OPTIONS:

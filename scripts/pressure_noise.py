@@ -24,7 +24,6 @@ Writes docs/results/sensor_convergence.md.
 usage: /usr/bin/python3 scripts/pressure_noise.py [--out DIR] [--reuse] [--repeats N]
        /usr/bin/python3 scripts/pressure_noise.py --convergence [--out DIR] [--reuse]
 """
-import argparse
 import os
 import subprocess
 
@@ -202,10 +201,7 @@ def convergence(args, experiment):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=os.path.join(cr.REPO, "out", "pressure_noise"))
-    parser.add_argument("--reuse", action="store_true",
-                        help="read the runs already in --out; run only the missing ones")
+    parser = cr.script_arguments(__doc__, "pressure_noise")
     parser.add_argument("--repeats", type=int, default=5,
                         help="pairs (option, default) of the cost measurement per option")
     parser.add_argument("--convergence", action="store_true",

@@ -26,7 +26,6 @@ pressure_noise.py --convergence.) Writes docs/results/sensor_support.md.
 
 usage: /usr/bin/python3 scripts/sensor_support.py [--out DIR] [--reuse]
 """
-import argparse
 import glob
 import os
 import re
@@ -161,9 +160,7 @@ def measure(folder):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=os.path.join(cr.REPO, "out", "sensor_support"))
-    parser.add_argument("--reuse", action="store_true", help="read the runs already in --out")
+    parser = cr.script_arguments(__doc__, "sensor_support")
     args = parser.parse_args()
 
     rows = []

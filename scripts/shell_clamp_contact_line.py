@@ -18,7 +18,6 @@ the same snapshot. Writes docs/results/shell_clamp_contact_line.md.
 usage: /usr/bin/python3 scripts/shell_clamp_contact_line.py [--reuse]
   --reuse   analyse the run already in out/validation/shell_clamp_contact_line
 """
-import argparse
 import glob
 import os
 import re
@@ -45,8 +44,7 @@ def failing_particle():
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--reuse", action="store_true")
+    parser = cr.script_arguments(__doc__)
     args = parser.parse_args()
     cr.run_or_reuse("elastic_plate", RUN, SETTINGS, args.reuse)
     particle, failure = failing_particle()

@@ -17,7 +17,6 @@ plate's own swing. Writes docs/results/shell_windows.md.
 usage: /usr/bin/python3 scripts/shell_window_vibration.py [--reuse]
   --reuse   analyse the runs already in out/validation/shell_windows_* instead of running
 """
-import argparse
 import math
 import os
 
@@ -73,8 +72,7 @@ def stepping(out):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--reuse", action="store_true")
+    parser = cr.script_arguments(__doc__)
     args = parser.parse_args()
     omega_r = rotation_frequency()
     rows = []

@@ -14,7 +14,6 @@ usage: /usr/bin/python3 scripts/validate_elastic_plate.py [--reuse] [--only SUFF
   --only    run only these configurations, reuse the others
 Also writes docs/results/elastic_plate_points.json for scripts/speed_accuracy.py.
 """
-import argparse
 import os
 
 import matplotlib
@@ -131,9 +130,7 @@ def cpu_budget(cpu_times, waits_s, target_s, cores=2):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--reuse", action="store_true",
-                        help="analyse the runs in out/validation/elastic_plate_* instead of running")
+    parser = cr.script_arguments(__doc__)
     parser.add_argument("--only", action="append", default=[],
                         help="run only these configurations ("
                              + ", ".join(suffix for _, suffix, _ in RUNS) + ")")

@@ -23,7 +23,6 @@ usage: /usr/bin/python3 scripts/validate_hydrostatic_plate.py [--reuse] [--only 
   --reuse   analyse the runs already in out/validation/hydrostatic_plate_* instead of running
   --only    run only these configurations, reuse the others
 """
-import argparse
 import os
 
 import matplotlib
@@ -122,9 +121,7 @@ def speed_point(series, p, dx_f, dx_s, wall, cpu, error):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--reuse", action="store_true",
-                        help="analyse the runs in out/validation/hydrostatic_plate_* instead")
+    parser = cr.script_arguments(__doc__)
     parser.add_argument("--only", action="append", default=[],
                         help="run only these (" + ", ".join(r[1] for r in RUNS) + ")")
     args = parser.parse_args()

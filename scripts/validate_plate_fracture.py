@@ -20,7 +20,6 @@ usage: /usr/bin/python3 scripts/validate_plate_fracture.py [--reuse] [--only NAM
   --reuse   analyse the runs already in out/validation/plate_fracture_* instead of running
   --only    run only these (no_fracture, sync, multirate), reuse the others
 """
-import argparse
 import glob
 import os
 import re
@@ -119,9 +118,7 @@ def draw_snapshots(out, path):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--reuse", action="store_true",
-                        help="analyse the runs in out/validation/plate_fracture_* instead of running")
+    parser = cr.script_arguments(__doc__)
     parser.add_argument("--only", action="append", default=[],
                         help="run only these (no_fracture, sync, multirate)")
     args = parser.parse_args()

@@ -13,7 +13,6 @@ docs/figures/shell_coupled.png.
 usage: /usr/bin/python3 scripts/validate_shell_coupled.py [--reuse] [--only SUFFIX ...]
   --reuse   analyse the runs already in out/validation/shell_coupled_* instead of running
 """
-import argparse
 import os
 
 import matplotlib
@@ -81,8 +80,7 @@ END_TIME = 0.4  # s, the case's
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--reuse", action="store_true")
+    parser = cr.script_arguments(__doc__)
     parser.add_argument("--only", action="append", default=[])
     args = parser.parse_args()
     experiment = {axis: cr.reference(f"antoci2007_plate_exp_{axis}.csv") for axis in "xy"}

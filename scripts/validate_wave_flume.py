@@ -41,7 +41,6 @@ usage: /usr/bin/python3 scripts/validate_wave_flume.py [--periods 1.0 1.3]
            [--spacings 0.02 0.01] [--finer 0.005] [--previous] [--no-reflection]
            [--reuse] [--points]
 """
-import argparse
 import glob
 import os
 
@@ -171,7 +170,7 @@ def write_points(out, reuse):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = cr.script_arguments(__doc__, "validation/wave_flume")
     parser.add_argument("--periods", type=float, nargs="+", default=[1.0, 1.3])
     parser.add_argument("--spacings", type=float, nargs="+", default=[0.02, 0.01])
     parser.add_argument("--finer", type=float, nargs="*", default=[],
@@ -180,8 +179,6 @@ def main():
                         help="also run the previous settings (cubic spline, h = 1.3 dx, A = 0.02) at 10 mm")
     parser.add_argument("--no-reflection", dest="reflection", action="store_false",
                         help="end the runs with the first window: no measured reflection")
-    parser.add_argument("--out", default=os.path.join(cr.REPO, "out", "validation", "wave_flume"))
-    parser.add_argument("--reuse", action="store_true", help="read the runs already in --out")
     parser.add_argument("--points", action="store_true",
                         help="run the speed-accuracy series only (into OUT/points)")
     args = parser.parse_args()
