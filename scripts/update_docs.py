@@ -59,6 +59,11 @@ def case_results():
     flume = [row for row in table_rows("wave_flume")
              if row.get("run") == "the case" and row.get("spacing (mm)") == "10"]
 
+    default_water = "delta-SPH (Marrone et al. 2011), the default"
+    wall = (first(table_rows("wall_pressure"), {"option": default_water, "spacing (mm)": "6"})
+            or first(table_rows("wall_pressure"), {"option": default_water}))
+    buchner = first(table_rows("wall_pressure"), {"option": "Buchner"})
+
     def text(row, make):
         return make(row) if row else missing
 
@@ -68,6 +73,13 @@ def case_results():
               f"Moyce 1952 at {r['spacing (mm)']} mm"
               + (f" (Koshizuka & Oka's MPS: {mps['RMS rel. error (T <= 3.1)']})" if mps else "")),
          "validation.md#dam-break-scene-1"),
+        ("[wall pressure](cases/dam_break_wall_pressure.pbtxt)",
+         "a dam break striking a wall: the pressure on it",
+         text(wall, lambda r: f"sensor RMS {r['P1 RMS vs experiment, as read']} rho g H against "
+              f"Buchner 2002 at {r['spacing (mm)']} mm; load between the impacts "
+              f"{r['plateau mean (t* 3.3-5.2)']} rho g H"
+              + (f" (experiment: {buchner['plateau mean (t* 3.3-5.2)']})" if buchner else "")),
+         "validation.md#the-load-on-a-wall-against-an-experiment-buchner-2002"),
         ("[oscillating plate](cases/oscillating_plate.pbtxt)", "a clamped plate vibrating in vacuum",
          text(plate, lambda r: f"period {r['error vs theory']} against thin-plate theory at "
               f"{r['particles across H']} particles across"),
