@@ -1,12 +1,14 @@
 // The parts of a kick-drift-kick step that both solid models take alike, on
-// any particle store with x, v, a, external_a (the coupler's share), c and
-// clamped: what the step may be, the kicks and the drift. A clamped particle
-// never moves.
+// any particle store with x, v, a, external_a (the coupler's share), c,
+// clamped and reach_end: what the step may be, the kicks and the drift. A
+// clamped particle never moves, and those past in_reach (clamp_reach.hpp)
+// are not visited.
 #pragma once
 
 #include <array>
 #include <cmath>
 
+#include "clamp_reach.hpp"
 #include "solid_parameters.hpp"
 #include "sphcore/parallel.hpp"
 #include "sphcore/region.hpp"
@@ -19,7 +21,7 @@ namespace cosph::solid {
 template <class Particles>
 sph::StepLimits solid_step_limits(const Particles& P, const SolidParameters& parameters) {
   const auto [v_max2, a_max2, c_max] =
-      sph::parallel_max(P.size(), std::array{0.0, 0.0, 0.0}, sph::kTeamAtAnySize, [&](long i) {
+      sph::parallel_max(in_reach(P), std::array{0.0, 0.0, 0.0}, sph::kTeamAtAnySize, [&](long i) {
         return std::array{P.v[i].squaredNorm(), P.a[i].squaredNorm(), P.c[i]};
       });
   return sph::step_limits(parameters.run.cfl, parameters.h, c_max, std::sqrt(v_max2),
@@ -40,7 +42,7 @@ void kick_and_drift(Particles& P, long i, double dt, const SolidParameters& para
 template <class Particles>
 void closing_kick(Particles& P, double dt) {
   const double half = 0.5 * dt;
-  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
+  sph::parallel_for(in_reach(P), sph::kTeamAtAnySize, [&](long i) {
     P.kick_a[i] = P.clamped[i] ? Vec2::Zero() : Vec2(P.a[i] + P.external_a[i]);
     P.v[i] += half * P.kick_a[i];
   });

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "clamp_reach.hpp"
 #include "participant/run_solver.hpp"
 #include "solid_parameters.hpp"
 #include "sphcore/case_file.hpp"
@@ -55,10 +56,18 @@ int run_solid_program(int argc, char** argv, const SolidProgram<Solver>& program
     threads.settle(solver.particles().size());
     long clamped = 0;
     for (auto c : solver.particles().clamped) clamped += c;
+    // The continuum solids' clamp out of reach (clamp_reach.hpp): particles
+    // past the last one in reach are never visited.
+    std::string out_of_reach;
+    if constexpr (requires { solver.particles().reach_end; })
+      out_of_reach = ", " +
+                     std::to_string(solver.particles().size() - in_reach(solver.particles())) +
+                     " of them never visited, out of every free particle's reach";
     std::cout << program.name << ": " << solver.particles().size() << " solid particles ("
-              << clamped << " clamped), dx = " << parameters.dx << " m, h = " << parameters.h
-              << " m, c = " << parameters.c0 << " m/s, " << program.summary(solver, parameters)
-              << ", " << omp_get_max_threads() << " threads" << std::endl;
+              << clamped << " clamped" << out_of_reach << "), dx = " << parameters.dx
+              << " m, h = " << parameters.h << " m, c = " << parameters.c0 << " m/s, "
+              << program.summary(solver, parameters) << ", " << omp_get_max_threads() << " threads"
+              << std::endl;
     for (const std::string& note : program.unused_settings(case_file, parameters))
       std::cout << program.name << ": note: " << note << std::endl;
     return coupling::run_solver(solver, parameters.run, case_file, args, "solid",

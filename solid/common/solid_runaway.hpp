@@ -1,10 +1,12 @@
 // The runaway check of a solid step, the same for every model: a screen of
-// all particles that vectorises (sphcore/runaway_screen.hpp), and only when
-// it fails the exact tests, which name the first particle that failed them.
+// the particles the step visits (clamp_reach.hpp; the others never change)
+// that vectorises (sphcore/runaway_screen.hpp), and only when it fails the
+// exact tests, which name the first particle that failed them.
 #pragma once
 
 #include <sstream>
 
+#include "clamp_reach.hpp"
 #include "sphcore/first_runaway.hpp"
 #include "sphcore/parallel.hpp"
 
@@ -17,8 +19,8 @@ namespace cosph::solid {
 template <class Particles, class Screen, class Reason, class Details>
 void stop_if_run_away(const Particles& P, double time, long steps, Screen&& passes_screen,
                       Reason&& reason, Details&& details) {
-  const bool may_have_run_away =
-      sph::parallel_any(P.size(), sph::kTeamAtAnySize, [&](long i) { return !passes_screen(i); });
+  const bool may_have_run_away = sph::parallel_any(in_reach(P), sph::kTeamAtAnySize,
+                                                   [&](long i) { return !passes_screen(i); });
   if (!may_have_run_away) return;
   sph::stop_at_first_runaway(P, "solid particle", time, steps, reason,
                              [&](std::ostringstream& message, std::size_t i) {

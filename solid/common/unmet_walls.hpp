@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "clamp_reach.hpp"
 #include "sphcore/parallel.hpp"
 #include "sphcore/region.hpp"
 #include "sphcore/runaway_error.hpp"
@@ -82,7 +83,8 @@ void stop_if_in_unmet_wall(const Particles& P, const std::vector<UnmetWall>& wal
   // A screen of all particles, which vectorises, before the search that
   // stops at the first: it runs every step, and a crossing ends the run.
   if (std::none_of(walls.begin(), walls.end(), [&P](const UnmetWall& wall) {
-        return sph::parallel_any(P.size(), sph::kTeamAtAnySize, [&](long i) {
+        // Free particles are all in reach (clamp_reach.hpp).
+        return sph::parallel_any(in_reach(P), sph::kTeamAtAnySize, [&](long i) {
           return !P.clamped[i] & wall.inside.contains(P.x[i]);
         });
       }))

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "clamp_reach.hpp"
 #include "jaumann_solver.hpp"
 
 namespace cosph::solid::jaumann {
@@ -32,6 +33,7 @@ void visit_state(Particles& P, const Visit& visit) {
   visit("clamped", P.clamped);
   visit("failed", P.failed);
   visit("inert", P.inert);
+  visit("out_of_reach", P.out_of_reach);
   visit("external_a", P.external_a);
   visit("kick_a", P.kick_a);
   visit("p", P.p);
@@ -64,12 +66,11 @@ void JaumannSolver::restore(const sph::Checkpoint& checkpoint) {
     throw std::runtime_error(checkpoint.path() + ": the solid's arrays differ in length");
   P.neighbours.resize(P.size());
   // The filters of sort(): the same list as at the sort itself.
-  const bool whole = parameters_.velocity_gradient == VelocityGradient::quadratic;
   if (!verlet_.restore(
-          std::move(x_at_sort), [&P](long i) { return !P.inert[i]; },
-          [&P, whole](long i, int j) { return whole || j > i || P.inert[j]; }))
+          std::move(x_at_sort), [&P](long i) { return !P.inert[i]; }, candidate_filter()))
     throw std::runtime_error(checkpoint.path() +
                              ": the solid's positions at its last sort are not in cell order");
+  P.reach_end = reach_end(P.out_of_reach);
 }
 
 }  // namespace cosph::solid::jaumann

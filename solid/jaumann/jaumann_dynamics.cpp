@@ -6,6 +6,7 @@
 #include <span>
 #include <vector>
 
+#include "clamp_reach.hpp"
 #include "jaumann_rate.hpp"
 #include "momentum_pair.hpp"
 #include "sphcore/kernel.hpp"
@@ -72,7 +73,7 @@ std::optional<Mat2> fitted_gradient(const JaumannParticles& P, long i, const Pai
 
 void compute_rates(JaumannParticles& P, const sph::CandidateList& candidates,
                    const SolidParameters& par) {
-  const long n = static_cast<long>(P.size());
+  const long n = static_cast<long>(in_reach(P));  // the rest take no part (clamp_reach.hpp)
   const double h = par.h, reach = kernel::kSupport * h, support2 = reach * reach;
   const bool quadratic = par.velocity_gradient == VelocityGradient::quadratic;
   const kernel::Value W_of(h);
@@ -82,7 +83,7 @@ void compute_rates(JaumannParticles& P, const sph::CandidateList& candidates,
   P.volume.resize(P.size());
   P.rate_sums.resize(P.size());
   if (quadratic) P.fitted_grad_v.resize(P.size());
-  sph::parallel_for(P.size(), use_team, [&](long i) { P.volume[i] = P.m[i] / P.rho[i]; });
+  sph::parallel_for(n, use_team, [&](long i) { P.volume[i] = P.m[i] / P.rho[i]; });
 
   // Each pair is worked out once, by the lower index, which gives the higher
   // one its share (sph::OrderedShares), and is listed for the momentum pass
@@ -135,7 +136,7 @@ void compute_rates(JaumannParticles& P, const sph::CandidateList& candidates,
   });
   shares.merge(P.rate_sums, use_team);
 
-  sph::parallel_for(P.size(), use_team, [&](long i) {
+  sph::parallel_for(n, use_team, [&](long i) {
     if (P.inert[i]) {
       P.drho[i] = 0.0;
       P.ds[i] = Mat2::Zero();
@@ -159,10 +160,10 @@ void compute_rates(JaumannParticles& P, const sph::CandidateList& candidates,
 }
 
 void compute_accelerations(JaumannParticles& P, const SolidParameters& par) {
-  const long n = static_cast<long>(P.size());
+  const long n = static_cast<long>(in_reach(P));  // the rest take no part (clamp_reach.hpp)
   const bool use_team = sph::kTeamAtAnySize;
   P.inverse_rho.resize(P.size());
-  sph::parallel_for(P.size(), use_team, [&](long i) { P.inverse_rho[i] = 1.0 / P.rho[i]; });
+  sph::parallel_for(n, use_team, [&](long i) { P.inverse_rho[i] = 1.0 / P.rho[i]; });
 
   // Each pair is worked out once, by the lower index, which lists it (the
   // rates pass), and which gives the higher one its share (sph::OrderedShares,
@@ -200,7 +201,7 @@ void compute_accelerations(JaumannParticles& P, const SolidParameters& par) {
     pass(MomentumPair<ArtificialStressTerm::any_power>(P, par));
   shares.merge(P.a, use_team);
   // The coupling's external_a is added by the kicks.
-  sph::parallel_for(P.size(), use_team, [&](long i) {
+  sph::parallel_for(n, use_team, [&](long i) {
     P.a[i] = P.clamped[i] ? Vec2::Zero() : Vec2(P.a[i] + par.run.gravity);
   });
 }

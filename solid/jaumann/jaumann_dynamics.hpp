@@ -8,6 +8,8 @@
 // 2. accelerations: dv/dt from the momentum equation with artificial
 //    viscosity and (if on) artificial stress, the one force evaluation.
 // Between them the solver turns rho and s into the stress (update_stress).
+// Both visit the first in_reach(particles) only: the clamped particles
+// behind them are out of every free particle's reach (clamp_reach.hpp).
 #pragma once
 
 #include "jaumann_particles.hpp"

@@ -37,11 +37,18 @@ struct JaumannParticles {
   // Clamped and out of reach of every particle that can move: its velocity
   // gradient, hence its rates, are zero for good, so the passes skip it.
   std::vector<std::uint8_t> inert;
+  // Clamped, and nothing a free particle reads depends on it
+  // (clamp_reach.hpp): inert too, and no particle's neighbour candidate.
+  std::vector<std::uint8_t> out_of_reach;
   // Acceleration imposed from outside (the coupler's fluid forces); zero alone.
   std::vector<Vec2> external_a;
   // The total acceleration of the last closing kick (own, gravity and the
   // coupler's; zero for clamped): the moving wall's a_w sent to the coupler.
   std::vector<Vec2> kick_a;
+
+  // The passes visit the particles before this one (clamp_reach.hpp): one
+  // past the last in reach, set at each sort.
+  std::size_t reach_end = static_cast<std::size_t>(-1);
 
   // Derived each step from the state.
   std::vector<double> p;                           // pressure P = K (rho/rho0 - 1)
@@ -81,6 +88,7 @@ struct JaumannParticles {
     clamped.push_back(is_clamped ? 1 : 0);
     failed.push_back(0);
     inert.push_back(0);
+    out_of_reach.push_back(0);
     external_a.push_back(Vec2::Zero());
     kick_a.push_back(Vec2::Zero());
   }

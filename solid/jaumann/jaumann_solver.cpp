@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "artificial_stress.hpp"
+#include "clamp_reach.hpp"
 #include "hooke_pressure.hpp"
 #include "jaumann_dynamics.hpp"
 #include "kick_drift_kick.hpp"
@@ -26,7 +27,7 @@ JaumannSolver::JaumannSolver(const sph::CaseFile& case_file, const SolidParamete
     : ContinuumSolidSolver(parameters,
                            JaumannParticles::from_scene(build_solid_scene(case_file, parameters))),
       verlet_(parameters.h) {
-  mark_inert_clamp();
+  set_clamp_reach();
   sort();
   compute_rates(particles_, verlet_.candidates(), parameters_);  // for the renormalisation matrices
   update_stress(Including::inert);
@@ -38,34 +39,43 @@ void JaumannSolver::sort() {
   // The rates pass works each pair out once, from its lower index: it needs
   // a particle's later candidates only, and its inert ones (an inert
   // particle has no list of its own). The quadratic fit needs them all.
-  const bool whole = parameters_.velocity_gradient == VelocityGradient::quadratic;
+  // Particles out of reach are candidates of none (candidate_filter).
   verlet_.sort(
       P.x,
       [&P](const std::vector<int>& order) {
         sph::permute(order, P.id, P.x, P.v, P.x0, P.rho, P.m, P.s, P.K, P.G, P.c, P.sigma_y,
-                     P.clamped, P.failed, P.inert, P.external_a, P.kick_a);
+                     P.clamped, P.failed, P.inert, P.out_of_reach, P.external_a, P.kick_a);
       },
-      [&P](long i) { return !P.inert[i]; },
-      [&P, whole](long i, int j) { return whole || j > i || P.inert[j]; });
+      [&P](long i) { return !P.inert[i]; }, candidate_filter());
+  P.reach_end = reach_end(P.out_of_reach);
 }
 
-void JaumannSolver::mark_inert_clamp() {
+void JaumannSolver::set_clamp_reach() {
   JaumannParticles& P = particles_;
-  // Twice the support: a free particle near the root may move a little closer.
-  const double reach = 2.0 * sph::kernel::kSupport * parameters_.h;
-  std::vector<Vec2> free;
-  for (std::size_t i = 0; i < P.size(); ++i)
-    if (!P.clamped[i]) free.push_back(P.x[i]);
-  for (std::size_t i = 0; i < P.size(); ++i)
-    P.inert[i] = P.clamped[i] && std::none_of(free.begin(), free.end(), [&](const Vec2& x) {
-                   return (x - P.x[i]).squaredNorm() < reach * reach;
-                 });
+  // What a free particle's acceleration reads of a neighbour j within 2h:
+  // x, v, rho, c and sigma L, R (of j's stress and density). A clamped j's
+  // density and stress change only through its rates, which are zero unless
+  // a free particle lies within 2h of it (its clamped neighbours are at rest
+  // with it); they and its L are sums over j's own neighbours k within 2h,
+  // of their positions, velocities and volumes. So a clamped particle needs
+  // its rates within one support (2h) of a free particle, and is read at
+  // all within two (a k's volume changes only if k is such a j itself). A
+  // free particle may come closer than it started; the margin for that is
+  // one more support (a clamp's root moves little). Hence rates within two
+  // supports of where the free particles start (the others are inert), and
+  // nothing at all beyond three: those are out of reach.
+  const double support = sph::kernel::kSupport * parameters_.h;
+  P.inert = clamped_beyond(P.x, P.clamped, 2.0 * support);
+  P.out_of_reach = clamped_beyond(P.x, P.clamped, 3.0 * support);
 }
 
 void JaumannSolver::update_stress(Including including) {
   JaumannParticles& P = particles_;
   const SolidParameters& par = parameters_;
-  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
+  // At the start every particle gets its stress, for the output and the
+  // coupler; later only those in reach.
+  const std::size_t n = including == Including::inert ? P.size() : in_reach(P);
+  sph::parallel_for(n, sph::kTeamAtAnySize, [&](long i) {
     // An inert particle's rates are zero: its stress is the one it started with.
     if (P.inert[i] && including == Including::active_only) return;
     // A failed particle carries no tension, so it has no expanded state: as it
@@ -92,14 +102,15 @@ void JaumannSolver::begin_step(double dt) {
 void JaumannSolver::advance_state(double dt) {
   JaumannParticles& P = particles_;
   // The largest squared displacement since the last sort.
-  const double moved2 = sph::parallel_max(P.size(), 0.0, sph::kTeamAtAnySize, [&](long i) {
+  const std::size_t n = in_reach(P);
+  const double moved2 = sph::parallel_max(n, 0.0, sph::kTeamAtAnySize, [&](long i) {
     if (P.clamped[i]) return 0.0;
     kick_and_drift(P, i, dt, parameters_);
     return verlet_.moved2(P.x[i], i);
   });
   if (verlet_.stale(moved2)) sort();
   compute_rates(P, verlet_.candidates(), parameters_);
-  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
+  sph::parallel_for(n, sph::kTeamAtAnySize, [&](long i) {
     P.rho[i] += dt * P.drho[i];
     P.s[i] += dt * P.ds[i];
   });

@@ -53,7 +53,15 @@ class JaumannSolver
  private:
   friend ContinuumSolidSolver;
   void sort();  // by cell, and the Verlet list rebuilt
-  void mark_inert_clamp();
+  // Which j the Verlet list keeps as candidates of i (sort and restore alike).
+  auto candidate_filter() const {
+    const JaumannParticles& P = particles_;
+    const bool whole = parameters_.velocity_gradient == VelocityGradient::quadratic;
+    return
+        [&P, whole](long i, int j) { return (whole || j > i || P.inert[j]) && !P.out_of_reach[j]; };
+  }
+  // Which clamped particles are inert and which out of reach (clamp_reach.hpp).
+  void set_clamp_reach();
   enum class Including { inert, active_only };
   void update_stress(Including including);
   // Throws sph::RunawayError if a particle's state is not physical.

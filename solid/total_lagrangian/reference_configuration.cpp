@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "clamp_reach.hpp"
 #include "solid_scene.hpp"
 #include "sphcore/cell_grid.hpp"
 #include "sphcore/kernel.hpp"
@@ -74,12 +75,19 @@ void find_reference_neighbours(TLParticles& P, double h) {
     for (ReferenceNeighbour& neighbour : neighbours)
       neighbour.grad_W0_tilde = P.L0[i] * neighbour.grad_W0;
   });
+  // A free particle reads, of its reference neighbours j (within 2h, fixed
+  // for the run), their deformation and stress: sums over j's own
+  // neighbours k of u_k, which for a clamped k is zero and needs nothing
+  // computed. So a clamped particle is read only if it is some free
+  // particle's neighbour, and with fixed neighbours no free particle can
+  // come closer: those with none are out of reach (inert).
   P.inert.resize(P.size());
   for (std::size_t i = 0; i < P.size(); ++i)
     P.inert[i] = P.clamped[i] && std::all_of(P.neighbours[i].begin(), P.neighbours[i].end(),
                                              [&P](const ReferenceNeighbour& neighbour) {
                                                return P.clamped[neighbour.j] != 0;
                                              });
+  P.reach_end = reach_end(P.inert);
 }
 
 }  // namespace cosph::solid::tl

@@ -24,7 +24,7 @@ TLParticles build_reference_configuration(const sph::CaseFile& case_file,
                                           const SolidParameters& parameters);
 
 // Fills neighbours and L0 from X, V0 (the particles within 2h), and inert
-// from them and clamped.
+// and reach_end from them and clamped.
 void find_reference_neighbours(TLParticles& particles, double h);
 
 // L0 = M^-1, or the identity where M is singular (a particle with no

@@ -1,5 +1,6 @@
 #include "tl_dynamics.hpp"
 
+#include "clamp_reach.hpp"
 #include "hourglass_control.hpp"
 #include "sphcore/artificial_viscosity.hpp"
 #include "sphcore/outer_product_sum.hpp"
@@ -9,7 +10,7 @@
 namespace cosph::solid::tl {
 
 void compute_deformation_and_stress(TLParticles& P) {
-  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
+  sph::parallel_for(in_reach(P), sph::kTeamAtAnySize, [&](long i) {
     if (P.inert[i]) return;  // at rest for good: F = I, no stress
     const Vec2 u_i = P.x[i] - P.X[i];
     sph::OuterProductSum grad_u;
@@ -32,7 +33,7 @@ void compute_deformation_and_stress(TLParticles& P) {
 
 void compute_accelerations(TLParticles& P, const ForceParameters& par) {
   const bool with_hourglass = par.hourglass_alpha > 0.0;
-  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
+  sph::parallel_for(in_reach(P), sph::kTeamAtAnySize, [&](long i) {
     if (P.clamped[i]) {
       P.a[i] = Vec2::Zero();
       return;

@@ -31,10 +31,12 @@ struct ForceParameters {
 };
 
 // Reads x, X, neighbours; writes F, J, rho, P_L0, sigma, sigma_zz, strain_energy,
-// except for inert particles, whose values stay those of F = I.
+// except for inert particles, whose values stay those of F = I. Both passes
+// visit the first in_reach(particles) only (clamp_reach.hpp).
 void compute_deformation_and_stress(TLParticles& particles);
 
-// Reads x, v, F, rho, P_L0; writes a (zero for clamped particles). The coupler's
+// Reads x, v, F, rho, P_L0; writes a (zero for clamped particles; those past
+// in_reach keep the zero they start with). The coupler's
 // external_a is not included: the kicks add it.
 void compute_accelerations(TLParticles& particles, const ForceParameters& parameters);
 

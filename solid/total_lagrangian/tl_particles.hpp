@@ -32,8 +32,12 @@ struct TLParticles {
   std::vector<std::uint8_t> clamped;
   // Clamped, and so is every reference neighbour: clamped particles never
   // move, so u = 0 all around it for good, F = I and its stress is zero (the
-  // values resize_derived gives). The deformation pass skips it.
+  // values resize_derived gives). No pass visits it, nor does any free
+  // particle read it: it is out of reach (clamp_reach.hpp).
   std::vector<std::uint8_t> inert;
+  // The passes visit the particles before this one: one past the last that
+  // is not inert.
+  std::size_t reach_end = static_cast<std::size_t>(-1);
   std::vector<Mat2> L0;  // reference kernel-gradient correction
   std::vector<std::vector<ReferenceNeighbour>> neighbours;
 

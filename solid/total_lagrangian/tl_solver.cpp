@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "clamp_reach.hpp"
 #include "kick_drift_kick.hpp"
 #include "reference_configuration.hpp"
 #include "solid_runaway.hpp"
@@ -40,7 +41,7 @@ void TLSolver::update() {
 
 void TLSolver::begin_step(double dt) {
   TLParticles& P = particles_;
-  sph::parallel_for(P.size(), sph::kTeamAtAnySize, [&](long i) {
+  sph::parallel_for(in_reach(P), sph::kTeamAtAnySize, [&](long i) {
     if (!P.clamped[i]) kick_and_drift(P, i, dt, parameters_);
   });
   update();

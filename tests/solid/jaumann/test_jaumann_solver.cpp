@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "bending_mode.hpp"
+#include "clamp_reach.hpp"
 #include "jaumann_dynamics.hpp"
 #include "jaumann_rate.hpp"
 #include "jaumann_solver.hpp"
@@ -311,6 +312,94 @@ TEST(JaumannSolver, EveryKindOfRunawayStopsTheStepAndNothingElseDoes) {
   const auto make_solver = [&] { return JaumannSolver(case_file, par); };
   const std::size_t n = make_solver().particles().size();
   cosph::testing::expect_exactly_the_runaways_stop(make_solver, spoils, {0, n / 2, n - 1});
+}
+
+// A plate hanging from a clamp 100 mm deep, pushed sideways: 4 particles
+// across at 5 mm (h = 6.5 mm, a support 13 mm), the clamp's 20 rows last in
+// the cell order.
+const char* kDeepClamp = R"(
+run { end_time: 1 gravity { x: 100 y: 0 } }
+solid {
+  spacing: 0.005 density: 1000 youngs_modulus: 2e6 poisson_ratio: 0.3
+  body { min { x: 0 y: 0 } max { x: 0.02 y: 0.16 } }
+  clamp { min { x: 0 y: 0.06 } max { x: 0.02 y: 0.16 } }
+  artificial_stress { enabled: true epsilon: 0.3 exponent: 4 }
+}
+)";
+
+// The rates and the momentum pass over the particles Q as the solver takes
+// them, on a neighbour search of their own: inert particles have no list, and
+// those out of reach are no one's candidates. The stress is the one Q has.
+void evaluate(JaumannParticles& Q, const SolidParameters& par) {
+  const double range = (2.0 + sph::kSkinOverH) * par.h;
+  sph::CellGrid grid;
+  grid.build(Q.x, range);
+  sph::permute(grid.order(), Q.id, Q.x, Q.v, Q.rho, Q.m, Q.s, Q.K, Q.G, Q.c, Q.clamped, Q.failed,
+               Q.inert, Q.out_of_reach, Q.sigma, Q.R);
+  Q.reach_end = reach_end(Q.out_of_reach);
+  sph::CandidateList candidates;
+  candidates.build(
+      grid, Q.x, range, [&Q](long i) { return !Q.inert[i]; },
+      [&Q](long i, int j) { return (j > i || Q.inert[j]) && !Q.out_of_reach[j]; });
+  compute_rates(Q, candidates, par);
+  for (std::size_t i = 0; i < in_reach(Q); ++i) Q.sigma_L[i] = sph::product_2x2(Q.sigma[i], Q.L[i]);
+  compute_accelerations(Q, par);
+}
+
+// The clamped particles out of reach are those three supports or more from
+// every free particle's start, inert ones (no rates) two supports or more, and
+// the passes stop at the last particle in reach. A free particle's
+// acceleration, and the rates wherever they are taken, are the same to
+// round-off when every particle is searched and given rates: nothing the
+// particles left out would compute reaches a free one.
+TEST(JaumannSolver, ClampOutOfReachIsWhatTheReachRuleSaysAndChangesNoFreeParticle) {
+  const sph::CaseFile case_file = sph::load_case(testing::write_case("deep_clamp", kDeepClamp));
+  const SolidParameters par = read_solid_parameters(case_file);
+  JaumannSolver solver(case_file, par);
+  for (int k = 0; k < 300; ++k) solver.step(solver.step_limits().smallest());
+  const JaumannParticles& P = solver.particles();
+  const double support = 2.0 * par.h;
+  long inert_in_reach = 0;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    double nearest_free = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < P.size(); ++j)
+      if (!P.clamped[j]) nearest_free = std::min(nearest_free, (P.x0[i] - P.x0[j]).norm());
+    ASSERT_EQ(P.out_of_reach[i] != 0, P.clamped[i] && nearest_free >= 3.0 * support)
+        << "particle " << P.id[i];
+    ASSERT_EQ(P.inert[i] != 0, P.clamped[i] && nearest_free >= 2.0 * support)
+        << "particle " << P.id[i];
+    ASSERT_TRUE(i < in_reach(P) || P.out_of_reach[i]) << "particle " << P.id[i];
+    inert_in_reach += P.inert[i] && !P.out_of_reach[i];
+  }
+  ASSERT_LT(in_reach(P), P.size());  // the case has particles no pass visits
+  ASSERT_GT(inert_in_reach, 0);
+
+  JaumannParticles some = P, all = P;
+  std::fill(all.out_of_reach.begin(), all.out_of_reach.end(), 0);
+  std::fill(all.inert.begin(), all.inert.end(), 0);
+  evaluate(some, par);
+  evaluate(all, par);
+  double largest_a = 0.0, largest_ds = 0.0;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    largest_a = std::max(largest_a, all.a[i].norm());
+    largest_ds = std::max(largest_ds, all.ds[i].norm());
+  }
+  ASSERT_GT(largest_a, 0.0);
+  int free = 0, clamped_with_rates = 0;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const auto k = std::find(some.id.begin(), some.id.end(), all.id[i]) - some.id.begin();
+    if (!all.clamped[i]) {
+      ASSERT_LT((some.a[k] - all.a[i]).norm(), 1e-12 * largest_a) << "particle " << all.id[i];
+      ++free;
+    }
+    // Where rates are taken they see every neighbour they would with all visited.
+    if (some.inert[k]) continue;
+    ASSERT_LT((some.L[k] - all.L[i]).norm(), 1e-12 * all.L[i].norm()) << "particle " << all.id[i];
+    ASSERT_LT((some.ds[k] - all.ds[i]).norm(), 1e-12 * largest_ds) << "particle " << all.id[i];
+    clamped_with_rates += all.clamped[i];
+  }
+  EXPECT_GT(free, 0);
+  EXPECT_GT(clamped_with_rates, 0);
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "bending_mode.hpp"
+#include "clamp_reach.hpp"
 #include "hooke_pressure.hpp"
 #include "reference_configuration.hpp"
 #include "runaway_spoils.hpp"
@@ -287,24 +288,43 @@ TEST(OscillatingPlateTl, CoarsePeriodNearThinPlateTheory) {
   EXPECT_NEAR(T / T_theory, 1.0, kCoarsePeriodTolerance) << "T = " << T << " s";
 }
 
-// The deformation pass skips clamped particles whose every neighbour is
-// clamped (inert). On the coarse oscillating plate, swinging, each keeps the
-// values the pass itself gives it, bit for bit.
-TEST(OscillatingPlateTl, InertClampKeepsWhatTheDeformationPassGivesIt) {
-  const sph::CaseFile case_file = sph::load_case(
-      plate_case_path(), {"solid.model=total_lagrangian", "solid.spacing=0.0033333333333333"});
+// The passes skip clamped particles whose every neighbour is clamped
+// (inert: out of every free particle's reach) and stop at the last particle
+// in reach. On the coarse Antoci plate, clamped at its top and swinging, each
+// keeps the values the deformation pass itself gives it, bit for bit, and
+// every particle's acceleration is what it is with all of them visited.
+TEST(ElasticPlateTl, ClampOutOfReachKeepsWhatThePassesGiveIt) {
+  const sph::CaseFile case_file = sph::load_case(testing::write_case("hanging_plate", R"(
+run { end_time: 1 gravity { x: 100 y: 0 } }
+solid {
+  model: "total_lagrangian"
+  spacing: 0.005 density: 1000 youngs_modulus: 2e6 poisson_ratio: 0.3
+  body { min { x: 0 y: 0 } max { x: 0.02 y: 0.16 } }
+  clamp { min { x: 0 y: 0.06 } max { x: 0.02 y: 0.16 } }
+}
+)"));
   TLSolver solver(case_file, read_solid_parameters(case_file));
   for (int k = 0; k < 200; ++k) solver.step(solver.step_limits().smallest());
   const TLParticles& P = solver.particles();
-  const long inert = std::count(P.inert.begin(), P.inert.end(), 1);
   long clamped_at_the_root = 0;
-  for (std::size_t i = 0; i < P.size(); ++i) clamped_at_the_root += P.clamped[i] && !P.inert[i];
-  ASSERT_GT(inert, 0);
-  ASSERT_GT(clamped_at_the_root, 0);  // clamped next to free ones: not inert, stressed
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const bool free_neighbour =
+        std::any_of(P.neighbours[i].begin(), P.neighbours[i].end(),
+                    [&P](const ReferenceNeighbour& neighbour) { return !P.clamped[neighbour.j]; });
+    ASSERT_EQ(P.inert[i] != 0, P.clamped[i] && !free_neighbour) << "particle " << P.id[i];
+    ASSERT_TRUE(i < in_reach(P) || P.inert[i]) << "particle " << P.id[i];
+    clamped_at_the_root += P.clamped[i] && !P.inert[i];
+  }
+  ASSERT_LT(in_reach(P), P.size());   // the case has particles no pass visits
+  ASSERT_GT(clamped_at_the_root, 0);  // clamped next to free ones: in reach, stressed
 
-  TLParticles all = P;
+  TLParticles some = P, all = P;
   std::fill(all.inert.begin(), all.inert.end(), 0);
-  compute_deformation_and_stress(all);
+  all.reach_end = all.size();
+  for (TLParticles* Q : {&some, &all}) {
+    compute_deformation_and_stress(*Q);
+    compute_accelerations(*Q, solver.force_parameters());
+  }
   for (std::size_t i = 0; i < P.size(); ++i) {
     ASSERT_EQ(P.F[i], all.F[i]) << "particle " << P.id[i];
     ASSERT_EQ(P.J[i], all.J[i]) << "particle " << P.id[i];
@@ -312,6 +332,7 @@ TEST(OscillatingPlateTl, InertClampKeepsWhatTheDeformationPassGivesIt) {
     ASSERT_EQ(P.sigma[i], all.sigma[i]) << "particle " << P.id[i];
     ASSERT_EQ(P.sigma_zz[i], all.sigma_zz[i]) << "particle " << P.id[i];
     ASSERT_EQ(P.strain_energy[i], all.strain_energy[i]) << "particle " << P.id[i];
+    ASSERT_EQ(some.a[i], all.a[i]) << "particle " << P.id[i];
   }
   double root_stress = 0.0;
   for (std::size_t i = 0; i < P.size(); ++i)
