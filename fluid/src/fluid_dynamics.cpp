@@ -239,8 +239,14 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
     });
   });
   shares.merge(P.a, threaded);
-  sph::parallel_pass(n, threaded, [&](long i) {
-    P.a[i] = P.is_water(i) ? Vec2(P.a[i] + par.run.gravity) : Vec2::Zero();
+  // The arrays in locals over each share: the Eigen store to a may alias
+  // anything, and through P both addresses were loaded again after it.
+  sph::for_each_share(P.size(), threaded, [&](long begin, long end, long) {
+    const Kind* const kind = P.kind.data();
+    Vec2* const a = P.a.data();
+    const Vec2 g = par.run.gravity;
+    for (long i = begin; i < end; ++i)
+      a[i] = kind[i] == Kind::water ? Vec2(a[i] + g) : Vec2::Zero();
   });
 }
 

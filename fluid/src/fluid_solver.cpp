@@ -135,12 +135,20 @@ void FluidSolver::advance_state(double dt) {
 void FluidSolver::end_step(double dt) {
   FluidParticles& P = particles_;
   const double half = 0.5 * dt;
-  sph::parallel_for(P.size(), [&](long i) {
-    if (!P.is_water(i)) return;
-    P.v[i] += half * (P.a[i] + P.external_a[i]);
-    // Computed by the coupler at the same positions as this step's drho,
-    // after the pressure was taken from rho: it acts from the next step on.
-    P.rho[i] += dt * P.external_drho[i];
+  // The arrays in locals over each share, as in advance_state.
+  sph::for_each_share(P.size(), sph::worth_threads(P.size()), [&](long begin, long end, long) {
+    const Kind* const kind = P.kind.data();
+    Vec2* const v = P.v.data();
+    const Vec2 *const a = P.a.data(), *const external_a = P.external_a.data();
+    double* const rho = P.rho.data();
+    const double* const external_drho = P.external_drho.data();
+    for (long i = begin; i < end; ++i) {
+      if (kind[i] != Kind::water) continue;
+      v[i] += half * (a[i] + external_a[i]);
+      // Computed by the coupler at the same positions as this step's drho,
+      // after the pressure was taken from rho: it acts from the next step on.
+      rho[i] += dt * external_drho[i];
+    }
   });
   time_ += dt;
   ++steps_;
