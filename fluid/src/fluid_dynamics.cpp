@@ -190,16 +190,28 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
   with_dissipation(par.dissipation, [&](auto dissipation) {
     const MomentumDissipation<dissipation> Pi_of(par.h, par.c0, par.A, par.B);
     sph::parallel_pass(blocks, threaded, [&](long b) {
-      for (long i = shares.begin(b); i < shares.end(b); ++i) P.a[i].setZero();
-      for (long i = shares.begin(b); i < shares.end(b); ++i) {
-        if (!P.is_water(i)) continue;
-        const Vec2 x_i = P.x[i], v_i = P.v[i];
-        const double m_i = P.m[i], rho_i = P.rho[i], inverse_rho_i = P.inverse_rho[i];
-        const SymmetricStress sigma_i = P.sigma[i];
+      // The arrays and Pi's constants held in locals: a share is stored
+      // through Eigen's packet stores, which may alias anything, so read
+      // through P, shares and Pi_of they were all loaded again for every pair.
+      const Kind* const kind = P.kind.data();
+      const Vec2 *const x = P.x.data(), *const v = P.v.data();
+      const double *const m = P.m.data(), *const rho = P.rho.data(),
+                          *const inverse_rho = P.inverse_rho.data();
+      const SymmetricStress* const sigma = P.sigma.data();
+      Vec2* const a = P.a.data();
+      const auto share = shares.block_shares(b, a);
+      const MomentumDissipation<dissipation> Pi = Pi_of;
+      const long begin = shares.begin(b), end = shares.end(b);
+      for (long i = begin; i < end; ++i) a[i].setZero();
+      for (long i = begin; i < end; ++i) {
+        if (kind[i] != Kind::water) continue;
+        const Vec2 x_i = x[i], v_i = v[i];
+        const double m_i = m[i], rho_i = rho[i], inverse_rho_i = inverse_rho[i];
+        const SymmetricStress sigma_i = sigma[i];
         const auto bracket_times_gradient_of = [&](int j, double F_ij) {
-          const Vec2 x_ij = x_i - P.x[j];
-          const double Pi_ij = Pi_of(x_ij, v_i - P.v[j], 0.5 * (rho_i + P.rho[j]));
-          return sph::bracket_times_gradient(sigma_i, P.sigma[j], inverse_rho_i, P.inverse_rho[j],
+          const Vec2 x_ij = x_i - x[j];
+          const double Pi_ij = Pi(x_ij, v_i - v[j], 0.5 * (rho_i + rho[j]));
+          return sph::bracket_times_gradient(sigma_i, sigma[j], inverse_rho_i, inverse_rho[j],
                                              Pi_ij, F_ij * x_ij);
         };
         const auto neighbours = pairs.neighbours(i);
@@ -211,24 +223,30 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
         // The water before i has given i its share already; its walls have not.
         for (std::size_t k = 0; k < later; ++k) {
           const int j = neighbours[k];
-          if (P.is_water(j)) continue;
-          a_i += P.m[j] * bracket_times_gradient_of(j, F[k]);
+          if (kind[j] == Kind::water) continue;
+          a_i += m[j] * bracket_times_gradient_of(j, F[k]);
         }
         // A later wall is sent a share too, which nothing reads: cheaper than
         // telling walls apart here.
         for (std::size_t k = later; k < neighbours.size(); ++k) {
           const int j = neighbours[k];
           const Vec2 bracket_times_gradient_ij = bracket_times_gradient_of(j, F[k]);
-          a_i += P.m[j] * bracket_times_gradient_ij;
-          shares.share(b, P.a.data(), j) -= m_i * bracket_times_gradient_ij;
+          a_i += m[j] * bracket_times_gradient_ij;
+          share(j) -= m_i * bracket_times_gradient_ij;
         }
-        P.a[i] += a_i;
+        a[i] += a_i;
       }
     });
   });
   shares.merge(P.a, threaded);
-  sph::parallel_pass(n, threaded, [&](long i) {
-    P.a[i] = P.is_water(i) ? Vec2(P.a[i] + par.run.gravity) : Vec2::Zero();
+  // The arrays in locals over each share: the Eigen store to a may alias
+  // anything, and through P both addresses were loaded again after it.
+  sph::for_each_share(P.size(), threaded, [&](long begin, long end, long) {
+    const Kind* const kind = P.kind.data();
+    Vec2* const a = P.a.data();
+    const Vec2 g = par.run.gravity;
+    for (long i = begin; i < end; ++i)
+      a[i] = kind[i] == Kind::water ? Vec2(a[i] + g) : Vec2::Zero();
   });
 }
 

@@ -97,16 +97,30 @@ void FluidSolver::advance_state(double dt) {
   // terms until the last kick. With the end's velocity instead, the walls
   // would approach the water at a dt / 2 in every pair term of the step: an
   // accelerated floor compressed the water above it and read 1.4 % high.
-  const double moved2 = sph::parallel_max(P.size(), 0.0, [&](long i) {
-    if (P.is_moving_wall(i)) {
-      place_moving_wall(static_cast<std::size_t>(i), time_ + dt, time_ + half);
-      return verlet_.moved2(P.x[i], i);
+  // Each share's arrays are held in locals: the Eigen stores to v and x may
+  // alias anything, and through P every address was loaded again after them.
+  const bool use_team = sph::worth_threads(P.size());
+  moved2_of_share_.assign(static_cast<std::size_t>(sph::share_count(P.size(), use_team)), 0.0);
+  sph::for_each_share(P.size(), use_team, [&](long begin, long end, long share) {
+    const Kind* const kind = P.kind.data();
+    Vec2 *const x = P.x.data(), *const v = P.v.data();
+    const Vec2 *const a = P.a.data(), *const external_a = P.external_a.data(),
+                      *const shift = P.shift.data(), *const x_at_sort = verlet_.x_at_sort().data();
+    double largest = 0.0;
+    for (long i = begin; i < end; ++i) {
+      if (kind[i] == Kind::moving_wall) {
+        place_moving_wall(static_cast<std::size_t>(i), time_ + dt, time_ + half);
+        largest = std::max(largest, (x[i] - x_at_sort[i]).squaredNorm());
+        continue;
+      }
+      if (kind[i] != Kind::water) continue;  // fixed walls
+      v[i] += half * (a[i] + external_a[i]);
+      x[i] += dt * v[i] + shift[i];
+      largest = std::max(largest, (x[i] - x_at_sort[i]).squaredNorm());
     }
-    if (!P.is_water(i)) return 0.0;  // fixed walls
-    P.v[i] += half * (P.a[i] + P.external_a[i]);
-    P.x[i] += dt * P.v[i] + P.shift[i];
-    return verlet_.moved2(P.x[i], i);
+    moved2_of_share_[static_cast<std::size_t>(share)] = largest;
   });
+  const double moved2 = *std::max_element(moved2_of_share_.begin(), moved2_of_share_.end());
   find_neighbours(spray_left_ || verlet_.stale(moved2));
   spray_left_ = false;
   compute_continuity_and_gradients(P, pairs_, parameters_);
@@ -121,12 +135,20 @@ void FluidSolver::advance_state(double dt) {
 void FluidSolver::end_step(double dt) {
   FluidParticles& P = particles_;
   const double half = 0.5 * dt;
-  sph::parallel_for(P.size(), [&](long i) {
-    if (!P.is_water(i)) return;
-    P.v[i] += half * (P.a[i] + P.external_a[i]);
-    // Computed by the coupler at the same positions as this step's drho,
-    // after the pressure was taken from rho: it acts from the next step on.
-    P.rho[i] += dt * P.external_drho[i];
+  // The arrays in locals over each share, as in advance_state.
+  sph::for_each_share(P.size(), sph::worth_threads(P.size()), [&](long begin, long end, long) {
+    const Kind* const kind = P.kind.data();
+    Vec2* const v = P.v.data();
+    const Vec2 *const a = P.a.data(), *const external_a = P.external_a.data();
+    double* const rho = P.rho.data();
+    const double* const external_drho = P.external_drho.data();
+    for (long i = begin; i < end; ++i) {
+      if (kind[i] != Kind::water) continue;
+      v[i] += half * (a[i] + external_a[i]);
+      // Computed by the coupler at the same positions as this step's drho,
+      // after the pressure was taken from rho: it acts from the next step on.
+      rho[i] += dt * external_drho[i];
+    }
   });
   time_ += dt;
   ++steps_;

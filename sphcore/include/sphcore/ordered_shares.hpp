@@ -67,6 +67,25 @@ class OrderedShares {
     return j < end_[block] ? sums[j] : spill_[static_cast<std::size_t>(base_[block] + j)];
   }
 
+  // share(block, sums, j) for one block, its bounds held by value: a pair
+  // loop whose stores may alias anything (Eigen's packet stores) would
+  // otherwise read end_[block] and base_[block] again after every share.
+  class BlockShares {
+   public:
+    T& operator()(long j) const { return j < end_ ? sums_[j] : spill_[base_ + j]; }
+
+   private:
+    friend class OrderedShares;
+    BlockShares(T* sums, T* spill, long end, long base)
+        : sums_(sums), spill_(spill), end_(end), base_(base) {}
+    T* sums_;
+    T* spill_;
+    long end_, base_;
+  };
+  BlockShares block_shares(long block, T* sums) {
+    return {sums, spill_.data(), end_[block], base_[block]};
+  }
+
   // Adds the spill buffers to the sums of the later blocks, in block order.
   void merge(std::span<T> sums, bool use_team) const {
     const long blocks = static_cast<long>(end_.size());
