@@ -99,28 +99,26 @@ void FluidSolver::advance_state(double dt) {
   // accelerated floor compressed the water above it and read 1.4 % high.
   // Each share's arrays are held in locals: the Eigen stores to v and x may
   // alias anything, and through P every address was loaded again after them.
-  const bool use_team = sph::worth_threads(P.size());
-  moved2_of_share_.assign(static_cast<std::size_t>(sph::share_count(P.size(), use_team)), 0.0);
-  sph::for_each_share(P.size(), use_team, [&](long begin, long end, long share) {
-    const Kind* const kind = P.kind.data();
-    Vec2 *const x = P.x.data(), *const v = P.v.data();
-    const Vec2 *const a = P.a.data(), *const external_a = P.external_a.data(),
-                      *const shift = P.shift.data(), *const x_at_sort = verlet_.x_at_sort().data();
-    double largest = 0.0;
-    for (long i = begin; i < end; ++i) {
-      if (kind[i] == Kind::moving_wall) {
-        place_moving_wall(static_cast<std::size_t>(i), time_ + dt, time_ + half);
-        largest = std::max(largest, (x[i] - x_at_sort[i]).squaredNorm());
-        continue;
-      }
-      if (kind[i] != Kind::water) continue;  // fixed walls
-      v[i] += half * (a[i] + external_a[i]);
-      x[i] += dt * v[i] + shift[i];
-      largest = std::max(largest, (x[i] - x_at_sort[i]).squaredNorm());
-    }
-    moved2_of_share_[static_cast<std::size_t>(share)] = largest;
-  });
-  const double moved2 = *std::max_element(moved2_of_share_.begin(), moved2_of_share_.end());
+  const double moved2 = sph::parallel_max_of_shares(
+      P.size(), 0.0, sph::worth_threads(P.size()), [&](long begin, long end, double largest) {
+        const Kind* const kind = P.kind.data();
+        Vec2 *const x = P.x.data(), *const v = P.v.data();
+        const Vec2 *const a = P.a.data(), *const external_a = P.external_a.data(),
+                          *const shift = P.shift.data(),
+                          *const x_at_sort = verlet_.x_at_sort().data();
+        for (long i = begin; i < end; ++i) {
+          if (kind[i] == Kind::moving_wall) {
+            place_moving_wall(static_cast<std::size_t>(i), time_ + dt, time_ + half);
+            largest = std::max(largest, (x[i] - x_at_sort[i]).squaredNorm());
+            continue;
+          }
+          if (kind[i] != Kind::water) continue;  // fixed walls
+          v[i] += half * (a[i] + external_a[i]);
+          x[i] += dt * v[i] + shift[i];
+          largest = std::max(largest, (x[i] - x_at_sort[i]).squaredNorm());
+        }
+        return largest;
+      });
   find_neighbours(spray_left_ || verlet_.stale(moved2));
   spray_left_ = false;
   compute_continuity_and_gradients(P, pairs_, parameters_);

@@ -110,8 +110,7 @@ class FluidSolver : public sph::ParticleSolver<FluidSolver, FluidParticles, Flui
   std::vector<long> interface_index_;  // particle indices of the last collect_interface
   TaitEquationOfState eos_;
   sph::SortedVerletList verlet_;
-  std::vector<double> moved2_of_share_;  // advance_state's largest displacement, per share
-  std::vector<int> walls_in_reach_;      // of the water at the last sort (walls_in_reach)
+  std::vector<int> walls_in_reach_;  // of the water at the last sort (walls_in_reach)
   long sorts_ = 0;
   bool spray_left_ = false;  // particles left since the last sort
   long spray_removed_ = 0;

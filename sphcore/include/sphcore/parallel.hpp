@@ -231,20 +231,16 @@ double* values_of(std::array<double, N>& largest) {
 }
 }  // namespace detail
 
-// The largest value(i) over i in [0, n), and `none` if that is larger. With
-// `none` a std::array<double, N> and value(i) one too, the largest of each of
-// N quantities in one pass. value may also update particle i (one pass
-// instead of two).
-template <class Maxima, class Value>
-Maxima parallel_max(std::size_t n, Maxima none, bool use_team, Value&& value) {
-  const auto loop = [&value](long begin, long end, Maxima largest) __attribute__((flatten)) {
-    for (long i = begin; i < end; ++i) detail::keep_larger(largest, value(i));
-    return largest;
-  };
+// The largest of what range(begin, end, largest) returns over the shares of
+// [0, n), and `none` if that is larger: range raises `largest` by the values
+// of its share and returns it. For a loop that holds its arrays in locals over
+// a share; `none` may be a std::array<double, N> of N quantities.
+template <class Maxima, class Range>
+Maxima parallel_max_of_shares(std::size_t n, Maxima none, bool use_team, Range&& range) {
   const long count = static_cast<long>(n);
-  if (!on_team(use_team)) return loop(0, count, none);
+  if (!on_team(use_team)) return range(0L, count, none);
 #if COSPH_PARALLEL_TBB
-  return detail::reduce_chunks(count, none, loop, [](Maxima a, const Maxima& b) {
+  return detail::reduce_chunks(count, none, range, [](Maxima a, const Maxima& b) {
     detail::keep_larger(a, b);
     return a;
   });
@@ -257,11 +253,24 @@ Maxima parallel_max(std::size_t n, Maxima none, bool use_team, Value&& value) {
     const auto [begin, end] = static_share(count);
     Maxima mine;
     std::copy(shared, shared + kCount, detail::values_of(mine));  // the reduction's identity
-    mine = loop(begin, end, mine);
+    mine = range(begin, end, mine);
     std::copy(detail::values_of(mine), detail::values_of(mine) + kCount, shared);
   }
   return largest;
 #endif
+}
+
+// The largest value(i) over i in [0, n), and `none` if that is larger. With
+// `none` a std::array<double, N> and value(i) one too, the largest of each of
+// N quantities in one pass. value may also update particle i (one pass
+// instead of two).
+template <class Maxima, class Value>
+Maxima parallel_max(std::size_t n, Maxima none, bool use_team, Value&& value) {
+  return parallel_max_of_shares(
+      n, none, use_team, [&value](long begin, long end, Maxima largest) __attribute__((flatten)) {
+        for (long i = begin; i < end; ++i) detail::keep_larger(largest, value(i));
+        return largest;
+      });
 }
 
 template <class Value>
