@@ -201,6 +201,7 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
       Vec2* const a = P.a.data();
       const auto share = shares.block_shares(b, a);
       const MomentumDissipation<dissipation> Pi = Pi_of;
+      const bool wall_friction = par.wall_friction;
       const long begin = shares.begin(b), end = shares.end(b);
       for (long i = begin; i < end; ++i) a[i].setZero();
       for (long i = begin; i < end; ++i) {
@@ -210,7 +211,10 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
         const SymmetricStress sigma_i = sigma[i];
         const auto bracket_times_gradient_of = [&](int j, double F_ij) {
           const Vec2 x_ij = x_i - x[j];
-          const double Pi_ij = Pi(x_ij, v_i - v[j], 0.5 * (rho_i + rho[j]));
+          // Free-slip walls (fluid.wall_friction "none"): no dissipation against them.
+          const double Pi_ij = wall_friction || kind[j] == Kind::water
+                                   ? Pi(x_ij, v_i - v[j], 0.5 * (rho_i + rho[j]))
+                                   : 0.0;
           return sph::bracket_times_gradient(sigma_i, sigma[j], inverse_rho_i, inverse_rho[j],
                                              Pi_ij, F_ij * x_ij);
         };
@@ -263,7 +267,8 @@ std::vector<Vec2> forces_on_walls(const FluidParticles& P, const sph::NeighbourL
         const int j = neighbours[k];
         if (P.is_water(j)) continue;
         const Vec2 x_ij = P.x[i] - P.x[j];
-        const double Pi_ij = Pi_of(x_ij, P.v[i] - P.v[j], 0.5 * (P.rho[i] + P.rho[j]));
+        const double Pi_ij =
+            par.wall_friction ? Pi_of(x_ij, P.v[i] - P.v[j], 0.5 * (P.rho[i] + P.rho[j])) : 0.0;
         force[P.wall_of(j)] -= P.m[i] * P.m[j] *
                                sph::bracket_times_gradient(P.sigma[i], P.sigma[j], P.inverse_rho[i],
                                                            P.inverse_rho[j], Pi_ij, F[k] * x_ij);

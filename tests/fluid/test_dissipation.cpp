@@ -189,13 +189,13 @@ TEST_P(StillTankWith, HoldsHydrostaticPressure) {
 // hydrostatic pressure. The Wendland C2 kernel needs h = 1.5 dx: at 1.3 dx
 // its lattice sum of x (x) grad W is 0.974 I and the band reads 2.7 % high.
 using Settings = std::vector<std::string>;
-INSTANTIATE_TEST_SUITE_P(EachOption, StillTankWith,
-                         ::testing::Values(Settings{"fluid.dissipation=delta_sph"},
-                                           Settings{"fluid.dissipation=fourtakas"},
-                                           Settings{"fluid.dissipation=riemann"},
-                                           Settings{"fluid.kernel=wendland_c2",
-                                                    "fluid.h_factor=1.5"},
-                                           Settings{"fluid.shifting=delta_plus"}));
+INSTANTIATE_TEST_SUITE_P(
+    EachOption, StillTankWith,
+    ::testing::Values(Settings{"fluid.dissipation=delta_sph"},
+                      Settings{"fluid.dissipation=fourtakas"},
+                      Settings{"fluid.dissipation=riemann"},
+                      Settings{"fluid.kernel=wendland_c2", "fluid.h_factor=1.5"},
+                      Settings{"fluid.shifting=delta_plus"}, Settings{"fluid.wall_friction=none"}));
 
 }  // namespace
 }  // namespace cosph::fluid
