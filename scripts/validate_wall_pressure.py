@@ -16,7 +16,17 @@ and p / (rho g H):
     (cosph_results.pressure_noise, as the dam break's sensors are measured);
   - the first time the running mean passes 0.2 (the experiment's rise);
   - wall and CPU time, one thread.
-Writes docs/results/wall_pressure.md and docs/figures/wall_pressure.png.
+The same runs, with free-slip walls too (fluid.wall_friction "none") for the
+default and the quietest option, against a converged two-dimensional solution
+of this flow (De Courcy et al. 2024, H / dx = 400;
+validation/reference/decourcy2024_wall_pressure_*.csv) at its four sensors on
+the far wall, 6, 30, 60 and 160 mm up: the RMS difference of each sensor's
+running mean, the load after the impact at the lowest, and when the impact
+reaches it. And the dam break's front against Martin & Moyce (the front's
+RMS relative error, T <= 3.1) with either wall friction, at 8 and 4 mm.
+Writes docs/results/wall_pressure.md, wall_pressure_2d_reference.md,
+wall_friction_front.md and docs/figures/wall_pressure.png,
+wall_pressure_2d_reference.png.
 
 usage: /usr/bin/python3 scripts/validate_wall_pressure.py [--out DIR] [--reuse]
 """
@@ -29,6 +39,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 import cosph_results as cr  # noqa: E402
+import validate_dam_break as dam  # noqa: E402
 from pressure_noise import OPTIONS  # noqa: E402
 
 CASE = "dam_break_wall_pressure"
@@ -39,6 +50,17 @@ RECORD = (2.0, 7.3)           # t*: the experiment's record
 PLATEAU = (3.3, 5.2)          # t*: between the impact and the jet's return
 RISE = 0.2                    # p / (rho g H)
 COARSE, FINE = 0.012, 0.006   # m: H / 50, H / 100
+FREE_SLIP = ["fluid.wall_friction=none"]
+# The options again with free-slip walls: the default and the quietest on the
+# plateau (docs/results/wall_pressure.md), keyed as the option plus this.
+FREE_SLIP_SUFFIX = "_free_slip"
+FREE_SLIP_OF = ("delta_sph", "riemann_wendland_2dx")
+# De Courcy et al. 2024's sensors: (timeseries column, height in mm, file).
+REFERENCE_2D = [(f"probe{k}_pressure", mm, f"decourcy2024_wall_pressure_y{mm:03d}mm.csv")
+                for k, mm in ((1, 6), (2, 30), (3, 60), (0, 160))]
+RECORD_2D = (2.3, 7.0)        # t*: its record
+LOAD_2D = (3.3, 5.2)          # t*: the load after the impact, as PLATEAU
+IMPACT = 0.5                  # p / (rho g H): the impact has reached the lowest sensor
 
 
 def experiment():
@@ -63,7 +85,46 @@ def measure(out, t_exp, p_exp):
     rise = t_star[inner][np.argmax(load_star > RISE)] if np.any(load_star > RISE) else np.nan
     return {"rms_read": rms_read, "rms_load": rms_load, "mean": mean, "noise": noise,
             "rise": rise, "t": t_star, "p": p_star, "wall": cr.logged_wall_time(out),
-            "cpu": sum(cr.logged_cpu_times(out).values())}
+            "cpu": sum(cr.logged_cpu_times(out).values()),
+            "against_2d": against_reference_2d(series, width)}
+
+
+def reference_2d():
+    """De Courcy et al. 2024's sensors: [(column, mm, t*, p*)], each sorted in
+    time (a curve traced off a figure steps back here and there)."""
+    curves = []
+    for column, mm, name in REFERENCE_2D:
+        series = cr.reference(name)
+        order = np.argsort(series["t_sqrt_g_over_H"], kind="stable")
+        curves.append((column, mm, series["t_sqrt_g_over_H"][order],
+                       series["p_over_rho_g_H"][order]))
+    return curves
+
+
+def window_mean(t, p, window):
+    """The time mean of the curve (t, p) over WINDOW = (from, to)."""
+    samples = np.linspace(window[0], window[1], 400)
+    return float(np.mean(np.interp(samples, t, p)))
+
+
+def against_reference_2d(series, width):
+    """For each of De Courcy's sensors: the RMS difference of this run's running
+    mean from the reference over its record, and the load after the impact
+    (run, reference); and when the running mean at the lowest sensor first
+    passes IMPACT (run, reference)."""
+    t_star = series["t"] / T_SCALE
+    sensors = []
+    for column, mm, t_ref, p_ref in reference_2d():
+        load, inner = cr.running_mean(series[column] / P_SCALE, width)
+        t_load = t_star[inner]
+        record = (t_ref >= RECORD_2D[0]) & (t_ref <= min(RECORD_2D[1], t_load[-1]))
+        rms = float(np.sqrt(np.mean((np.interp(t_ref[record], t_load, load) -
+                                     p_ref[record]) ** 2)))
+        sensors.append({"mm": mm, "rms": rms, "load": window_mean(t_load, load, LOAD_2D),
+                        "load_ref": window_mean(t_ref, p_ref, LOAD_2D), "t": t_load,
+                        "p": load, "impact": t_load[np.argmax(load > IMPACT)],
+                        "impact_ref": t_ref[np.argmax(p_ref > IMPACT)]})
+    return sensors
 
 
 def quietest(results):
@@ -98,9 +159,12 @@ def main():
     args = cr.script_arguments(__doc__, "validation/wall_pressure").parse_args()
     t_exp, p_exp = experiment()
     results = {}
+    options = OPTIONS + [(key + FREE_SLIP_SUFFIX, label + ", free-slip walls", settings + FREE_SLIP)
+                         for key, label, settings in OPTIONS if key in FREE_SLIP_OF]
     for spacing in (COARSE, FINE):
-        for key, label, settings in OPTIONS:
-            if spacing == FINE and key not in ("delta_sph", quietest(results)):
+        for key, label, settings in options:
+            fine = ("delta_sph", "delta_sph" + FREE_SLIP_SUFFIX, quietest(results))
+            if spacing == FINE and key not in fine:
                 continue
             out = os.path.join(args.out, f"{key}_{1e3 * spacing:g}mm")
             _, failure = cr.run_or_reuse(CASE, out, settings + [
@@ -110,7 +174,7 @@ def main():
             results[(spacing, key)] = measured
             if measured is None:
                 print(f"{key} at {spacing}: {failure or 'did not reach the record end'}")
-    labels = {key: label for key, label, _ in OPTIONS}
+    labels = {key: label for key, label, _ in options}
     rows = []
     for (spacing, key), r in results.items():
         if r is None:
@@ -133,8 +197,9 @@ def main():
         "5.366 H away), the pressure sensor P1 on the far wall 0.16 m up, against the "
         "experiment (validation/reference/buchner2002_wall_pressure_p1.csv), in "
         "t* = t sqrt(g/H) and p / (rho g H), for the water's options of "
-        "`scripts/pressure_noise.py`, at H / 50 = 12 mm, and at H / 100 = 6 mm for the default "
-        "and the option quietest on the plateau at 12 mm. RMS differences "
+        "`scripts/pressure_noise.py`, and the default and the option quietest on the plateau "
+        "with free-slip walls (`fluid.wall_friction` \"none\"), at H / 50 = 12 mm, and at "
+        "H / 100 = 6 mm for the default, with either walls, and the quietest. RMS differences "
         f"over the experiment's record (t* {RECORD[0]}-{RECORD[1]}) of the sensor as read and "
         "of its running mean over 0.1 sqrt(H/g) (the load without the noise); the plateau "
         "between the impact and the jet's return, its mean and its noise (RMS about that "
@@ -143,7 +208,84 @@ def main():
     shown = [(f"{labels[key]}, {1e3 * spacing:g} mm", r) for (spacing, key), r in results.items()
              if r is not None and (spacing == FINE or key == "delta_sph")]
     draw(shown, t_exp, p_exp, os.path.join(cr.FIGURES, "wall_pressure.png"))
-    print("wrote docs/results/wall_pressure.md and docs/figures/wall_pressure.png")
+    write_against_reference_2d(results, labels)
+    write_front(args)
+    print("wrote docs/results/wall_pressure.md, wall_pressure_2d_reference.md, "
+          "wall_friction_front.md and docs/figures/wall_pressure.png, "
+          "wall_pressure_2d_reference.png")
+
+
+def write_against_reference_2d(results, labels):
+    rows = []
+    for (spacing, key), r in results.items():
+        if r is None:
+            continue
+        sensors = r["against_2d"]
+        lowest = sensors[0]
+        rows.append([labels[key], f"{1e3 * spacing:g}"] +
+                     [f"{sensor['rms']:.3f}" for sensor in sensors] +
+                     [f"{lowest['load']:.2f}", f"{lowest['impact']:.2f}"])
+    reference = next(r for r in results.values() if r is not None)["against_2d"]
+    rows.append(["De Courcy et al. 2024, H / dx = 400", ""] + ["" for _ in reference] +
+                [f"{reference[0]['load_ref']:.2f}", f"{reference[0]['impact_ref']:.2f}"])
+    header = (["option", "spacing (mm)"] +
+              [f"RMS vs the 2-D solution, {sensor['mm']} mm up" for sensor in reference] +
+              [f"load at 6 mm (t* {LOAD_2D[0]}-{LOAD_2D[1]})",
+               f"impact at 6 mm: t* where the load passes {IMPACT}"])
+    preamble = (
+        "Written by `scripts/validate_wall_pressure.py`. The runs of the table above (and the "
+        "default and the quietest option with free-slip walls, `fluid.wall_friction` \"none\") "
+        "against a converged two-dimensional solution of the same flow: De Courcy et al. 2024 "
+        "(incompressible delta-SPH, H / dx = 400; validation/reference/"
+        "decourcy2024_wall_pressure_*.csv), at its sensors on the far wall 6, 30, 60 and 160 mm "
+        "up (the last is Buchner's P1). In t* = t sqrt(g/H) and p / (rho g H): the RMS "
+        "difference of each sensor's running mean over 0.1 sqrt(H/g) from the solution over "
+        f"t* {RECORD_2D[0]}-{RECORD_2D[1]}; at the lowest sensor, the mean load after the "
+        "impact and the time the load first passes "
+        f"{IMPACT}.")
+    cr.write_table("wall_pressure_2d_reference", header, rows, preamble)
+    shown = [(labels[key], r) for (spacing, key), r in results.items()
+             if r is not None and spacing == FINE]
+    fig, axes = plt.subplots(len(reference), 1, figsize=(9, 2.4 * len(reference)), sharex=True)
+    for ax, (column, mm, t_ref, p_ref) in zip(axes, reference_2d()):
+        for label, r in shown:
+            sensor = next(s for s in r["against_2d"] if s["mm"] == mm)
+            ax.plot(sensor["t"], sensor["p"], lw=0.9, label=f"cosph, 6 mm: {label}")
+        ax.plot(t_ref, p_ref, "k-", lw=1.2, label="De Courcy et al. 2024 (2-D, H/dx = 400)")
+        ax.set_ylabel(f"{mm} mm up: p / (rho g H)")
+        ax.grid(alpha=0.3)
+    axes[0].legend(loc="upper right", fontsize=7)
+    axes[-1].set_xlim(2.0, 7.0)
+    axes[-1].set_xlabel("t sqrt(g/H)  (cosph: running mean over 0.1 sqrt(H/g))")
+    fig.tight_layout()
+    fig.savefig(os.path.join(cr.FIGURES, "wall_pressure_2d_reference.png"), dpi=110)
+    plt.close(fig)
+
+
+def write_front(args):
+    """The dam break's front against Martin & Moyce with either wall friction."""
+    experiment = cr.reference("martin_moyce_n2_front.csv")
+    T_exp, Z_exp = experiment["T_t_sqrt_2g_over_a"], experiment["Z_z_over_a"]
+    window = T_exp <= dam.T_LAST
+    end_time = 1.05 * dam.T_LAST / np.sqrt(2 * dam.G / dam.COLUMN_WIDTH)
+    rows = []
+    for spacing in (0.008, 0.004):
+        for label, settings in (("dissipation (the default)", []), ("none: free-slip", FREE_SLIP)):
+            out = os.path.join(args.out, "front", f"{settings and 'free_slip' or 'default'}_"
+                               f"{1e3 * spacing:g}mm")
+            cr.run_or_reuse("dam_break", out, settings + [f"fluid.spacing={spacing}",
+                                                          f"run.end_time={end_time:.4f}"],
+                            args.reuse)
+            T, Z, _ = dam.dimensionless(cr.read_csv(os.path.join(out, "timeseries.csv")))
+            rms, worst = cr.rms_relative_error(T, Z, T_exp[window], Z_exp[window])
+            rows.append([label, f"{1e3 * spacing:g}", f"{100 * rms:.1f} %",
+                         f"{100 * worst:.1f} %"])
+    preamble = (
+        "Written by `scripts/validate_wall_pressure.py`. The dam break's front "
+        "(`cases/dam_break.pbtxt`) against Martin & Moyce 1952 over T = t sqrt(2g/a) <= "
+        f"{dam.T_LAST}, as in the dam break's own table, with either `fluid.wall_friction`.")
+    cr.write_table("wall_friction_front", ["fluid.wall_friction", "spacing (mm)",
+                                           "front: RMS rel. error", "largest"], rows, preamble)
 
 
 if __name__ == "__main__":
