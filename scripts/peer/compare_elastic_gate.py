@@ -3,7 +3,8 @@
 
 The configuration is SPHinXsys's test_2d_elastic_gate: Antoci 2007 with E = 7.8 MPa,
 nu = 0.47, water 2.5 mm, gate 1.25 mm (4 particles across). Runs, alternately REPEATS
-times, the peer (scripts/peer/sphinxsys_elastic_gate.sh), cosph's shell and cosph's
+times, the peer (--peer-command: the user's own build of it, outside this
+repository, which holds no recipe to build a peer), cosph's shell and cosph's
 Jaumann solid on cases/elastic_plate.pbtxt with those settings (automatic stepping), and
 prints the median wall times and the tip RMS against the experiment, as
 scripts/validate_elastic_plate.py measures it.
@@ -14,10 +15,16 @@ exact-stiffness plate would need to bend like it, and ONE diagnostic run of cosp
 at that modulus (a diagnosis of the gap, not a setting). Writes
 docs/results/peer_elastic_gate.md.
 
-usage: /usr/bin/python3 scripts/peer/compare_elastic_gate.py [--repeats N] [--no-vacuum]
+The peer command is called as `CMD OUT` and `CMD --vacuum OUT`. It runs the peer's
+elastic-gate test (or the same gate alone in vacuum, started in its first bending mode)
+and writes OUT/tip.csv (t_s, tip_dx_m, tip_dy_m: the free end's displacement, x positive
+downstream), or OUT/vacuum.csv (t_s, mid_dx_m, corner_dx_m), with OUT/wall_time.txt
+(seconds of the run alone) and OUT/commit.txt (the peer's commit).
+
+usage: /usr/bin/python3 scripts/peer/compare_elastic_gate.py --peer-command CMD
+                        [--repeats N] [--no-vacuum]
 """
 import argparse
-import math
 import os
 import statistics
 import subprocess
@@ -30,10 +37,9 @@ sys.path.insert(0, os.path.dirname(HERE))
 import cosph_results as cr  # noqa: E402
 import validate_shell  # noqa: E402
 
-PEER = os.path.join(HERE, "sphinxsys_elastic_gate.sh")
 OUT = os.path.join(cr.REPO, "out", "peer")
 # The peer's gate: E, nu, rho, thickness (m); its free length is 79 mm less the 0.25 mm its
-# test lifts the lattice by (elastic_gate_in_vacuum.cpp's free_length).
+# test lifts the lattice by.
 E, NU, RHO, THICKNESS, FREE_LENGTH = 7.8e6, 0.47, 1100.0, 0.005, 0.07875
 PEER_SETTINGS = [f"solid.youngs_modulus={E!r}", f"solid.poisson_ratio={NU!r}",
                  "fluid.spacing=0.0025", "solid.spacing=0.00125"]
@@ -57,8 +63,8 @@ def late_mean(t, dx):
     return float(np.mean(np.interp(samples, t, dx)))
 
 
-def run_peer(out, vacuum=False):
-    command = [PEER] + (["--vacuum"] if vacuum else []) + [out]
+def run_peer(peer_command, out, vacuum=False):
+    command = peer_command.split() + (["--vacuum"] if vacuum else []) + [out]
     print("running:", " ".join(command), flush=True)
     subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
     return float(open(os.path.join(out, "wall_time.txt")).read())
@@ -96,6 +102,8 @@ def beam_periods(youngs_modulus, length):
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--peer-command", required=True,
+                        help="the command that runs the peer (see above)")
     parser.add_argument("--repeats", type=int, default=3,
                         help="runs of each program, alternately (default 3)")
     parser.add_argument("--no-vacuum", action="store_true",
@@ -107,7 +115,7 @@ def main():
     tips = {}
     for repeat in range(args.repeats):
         out = os.path.join(OUT, "sphinxsys")
-        walls["peer"].append(run_peer(out))
+        walls["peer"].append(run_peer(args.peer_command, out))
         tips["peer"] = peer_tip(out)
         for _, key, settings in COSPH:
             wall, tips[key] = run_cosph(os.path.join(OUT, key), settings)
@@ -158,7 +166,7 @@ def main():
     vacuum_text = ""
     if not args.no_vacuum:
         out = os.path.join(OUT, "sphinxsys_vacuum")
-        run_peer(out, vacuum=True)
+        run_peer(args.peer_command, out, vacuum=True)
         data = cr.read_csv(os.path.join(out, "vacuum.csv"))
         period, periods = period_of(data["t_s"], data["mid_dx_m"])
         t_eb, t_timoshenko = beam_periods(E, FREE_LENGTH)
@@ -176,7 +184,7 @@ def main():
                      f"{1e3 * late_mean(*tip[:2]):.1f}", f"{wall:.1f} s", ""])
         cosph_t, cosph_period = beam_periods(E, 0.079)
         vacuum_text = (
-            "\n\nThe peer's gate alone in vacuum (`scripts/peer/elastic_gate_in_vacuum.cpp`: its "
+            "\n\nThe peer's gate alone in vacuum (the peer command's --vacuum run: its "
             "geometry, clamp, material, 1.25 mm lattice and solid integration, no water, started "
             "in its first bending mode, free-end amplitude about 1 mm): period "
             f"{1e3 * period:.2f} ms over {periods} periods, against {1e3 * t_eb:.2f} ms "
