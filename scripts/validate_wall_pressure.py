@@ -16,14 +16,16 @@ and p / (rho g H):
     (cosph_results.pressure_noise, as the dam break's sensors are measured);
   - the first time the running mean passes 0.2 (the experiment's rise);
   - wall and CPU time, one thread.
-The same runs, with free-slip walls too (fluid.wall_friction "none") for the
-default and the quietest option, against a converged two-dimensional solution
+The same runs, with the other walls of fluid.wall_friction too ("none":
+free-slip; "normal": damping along their normal only) for the default and
+the quietest option, against a converged two-dimensional solution
 of this flow (De Courcy et al. 2024, H / dx = 400;
 validation/reference/decourcy2024_wall_pressure_*.csv) at its four sensors on
 the far wall, 6, 30, 60 and 160 mm up: the RMS difference of each sensor's
 running mean, the load after the impact at the lowest, and when the impact
 reaches it. And the dam break's front against Martin & Moyce (the front's
-RMS relative error, T <= 3.1) with either wall friction, at 8 and 4 mm.
+RMS relative error, T <= 3.1) and its far-wall sensor with each wall
+friction, at 8 and 4 mm.
 Writes docs/results/wall_pressure.md, wall_pressure_2d_reference.md,
 wall_friction_front.md and docs/figures/wall_pressure.png,
 wall_pressure_2d_reference.png.
@@ -50,10 +52,11 @@ RECORD = (2.0, 7.3)           # t*: the experiment's record
 PLATEAU = (3.3, 5.2)          # t*: between the impact and the jet's return
 RISE = 0.2                    # p / (rho g H)
 COARSE, FINE = 0.012, 0.006   # m: H / 50, H / 100
-FREE_SLIP = ["fluid.wall_friction=none"]
-# The options again with free-slip walls: the default and the quietest on the
-# plateau (docs/results/wall_pressure.md), keyed as the option plus this.
-FREE_SLIP_SUFFIX = "_free_slip"
+# The default and the quietest option on the plateau again with the other
+# walls of fluid.wall_friction: (key suffix, label suffix, settings).
+WALLS = [("_free_slip", ", free-slip walls", ["fluid.wall_friction=none"]),
+         ("_normal", ", walls damping along their normal only", ["fluid.wall_friction=normal"])]
+FREE_SLIP_SUFFIX = WALLS[0][0]
 FREE_SLIP_OF = ("delta_sph", "riemann_wendland_2dx")
 # De Courcy et al. 2024's sensors: (timeseries column, height in mm, file).
 REFERENCE_2D = [(f"probe{k}_pressure", mm, f"decourcy2024_wall_pressure_y{mm:03d}mm.csv")
@@ -159,16 +162,19 @@ def main():
     args = cr.script_arguments(__doc__, "validation/wall_pressure").parse_args()
     t_exp, p_exp = experiment()
     results = {}
-    options = OPTIONS + [(key + FREE_SLIP_SUFFIX, label + ", free-slip walls", settings + FREE_SLIP)
-                         for key, label, settings in OPTIONS if key in FREE_SLIP_OF]
+    options = OPTIONS + [(key + suffix, label + label_suffix, settings + walls)
+                         for key, label, settings in OPTIONS if key in FREE_SLIP_OF
+                         for suffix, label_suffix, walls in WALLS]
     for spacing in (COARSE, FINE):
         for key, label, settings in options:
-            fine = ("delta_sph", "delta_sph" + FREE_SLIP_SUFFIX, quietest(results))
+            fine = ("delta_sph", "delta_sph" + FREE_SLIP_SUFFIX, "riemann_wendland_2dx",
+                    "riemann_wendland_2dx_normal", quietest(results))
             if spacing == FINE and key not in fine:
                 continue
             out = os.path.join(args.out, f"{key}_{1e3 * spacing:g}mm")
             _, failure = cr.run_or_reuse(CASE, out, settings + [
-                f"fluid.spacing={spacing}", "run.threads=1", "run.snapshot_interval=1"], args.reuse)
+                f"fluid.spacing={spacing}", "run.threads=1", "run.snapshot_interval=1"],
+                args.reuse and os.path.exists(os.path.join(out, "timeseries.csv")))
             measured = measure(out, t_exp, p_exp) if os.path.exists(
                 os.path.join(out, "timeseries.csv")) else None
             results[(spacing, key)] = measured
@@ -198,8 +204,10 @@ def main():
         "experiment (validation/reference/buchner2002_wall_pressure_p1.csv), in "
         "t* = t sqrt(g/H) and p / (rho g H), for the water's options of "
         "`scripts/pressure_noise.py`, and the default and the option quietest on the plateau "
-        "with free-slip walls (`fluid.wall_friction` \"none\"), at H / 50 = 12 mm, and at "
-        "H / 100 = 6 mm for the default, with either walls, and the quietest. RMS differences "
+        "with the other walls of `fluid.wall_friction` (\"none\": free-slip; \"normal\": "
+        "damping along their normal only), at H / 50 = 12 mm, and at "
+        "H / 100 = 6 mm for the default, also with free-slip walls, and the quietest, also with "
+        "walls damping along their normal. RMS differences "
         f"over the experiment's record (t* {RECORD[0]}-{RECORD[1]}) of the sensor as read and "
         "of its running mean over 0.1 sqrt(H/g) (the load without the noise); the plateau "
         "between the impact and the jet's return, its mean and its noise (RMS about that "
@@ -234,7 +242,8 @@ def write_against_reference_2d(results, labels):
                f"impact at 6 mm: t* where the load passes {IMPACT}"])
     preamble = (
         "Written by `scripts/validate_wall_pressure.py`. The runs of the table above (and the "
-        "default and the quietest option with free-slip walls, `fluid.wall_friction` \"none\") "
+        "default and the quietest option with the other walls of `fluid.wall_friction`: "
+        "\"none\", free-slip, and \"normal\", damping along their normal only) "
         "against a converged two-dimensional solution of the same flow: De Courcy et al. 2024 "
         "(incompressible delta-SPH, H / dx = 400; validation/reference/"
         "decourcy2024_wall_pressure_*.csv), at its sensors on the far wall 6, 30, 60 and 160 mm "
@@ -274,10 +283,9 @@ def write_front(args):
     rows = []
     for key, label, settings in waters:
         for spacing in (0.008, 0.004):
-            for walls, friction in (("dissipation (the default)", []), ("none: free-slip",
-                                                                         FREE_SLIP)):
-                out = os.path.join(args.out, "dam_break", f"{key}{'_free_slip' * bool(friction)}"
-                                   f"_{1e3 * spacing:g}mm")
+            for walls, suffix, friction in [("dissipation (the default)", "", [])] + [
+                    (setting[0].split("=")[1], suffix, setting) for suffix, _, setting in WALLS]:
+                out = os.path.join(args.out, "dam_break", f"{key}{suffix}_{1e3 * spacing:g}mm")
                 cr.run_or_reuse("dam_break", out, settings + friction + [
                     f"fluid.spacing={spacing}", f"run.end_time={end_time:.2f}",
                     f"run.output_interval={dam.OUTPUT_INTERVAL}"],
@@ -290,7 +298,7 @@ def write_front(args):
                              f"{100 * worst:.1f} %", f"{mean:.3f}", f"{noise:.3f}"])
     preamble = (
         "Written by `scripts/validate_wall_pressure.py`. The dam break (`cases/dam_break.pbtxt`) "
-        "with the default water and the quietest option, each with either "
+        "with the default water and the quietest option, each with every "
         "`fluid.wall_friction`: the front against Martin & Moyce 1952 over T = t sqrt(2g/a) <= "
         f"{dam.T_LAST}, and the far-wall sensor after the impact (t = {dam.AFTER_IMPACT[0]}-"
         f"{dam.AFTER_IMPACT[1]} s), its mean and noise over rho0 g H, as the dam break's own "

@@ -20,6 +20,14 @@ using sph::Vec2;
 
 enum class Dissipation { delta_sph, fourtakas, riemann };
 
+// How the momentum dissipation term acts between the water and its walls
+// (fluid.wall_friction, proto/case.proto): as between water particles, along
+// the line between the two (dissipation: it brakes water sliding along a
+// wall); not at all (none: free-slip walls); or on the relative velocity's
+// part along the wall's normal only (normal: free-slip walls that still damp
+// water running into them, as a mirrored ghost particle would).
+enum class WallFriction { dissipation, none, normal };
+
 // f(std::integral_constant<Dissipation, d>{}) for the run's dissipation d: a
 // pass written once and compiled for each, so that its pair loop holds only
 // the chosen one's terms.
@@ -56,5 +64,21 @@ class MomentumDissipation {
   sph::UniformArtificialViscosity monaghan_;
   sph::RiemannLimitedDissipation riemann_limited_;
 };
+
+// The Pi_ij of a water particle i and a wall particle j, whose normal towards
+// the water is n_w, under fluid.wall_friction.
+template <class MomentumPi>
+double wall_dissipation(const MomentumPi& Pi, WallFriction friction, const Vec2& x_ij,
+                        const Vec2& v_ij, const Vec2& n_w, double rho_bar) {
+  switch (friction) {
+    case WallFriction::none:
+      return 0.0;
+    case WallFriction::normal:
+      return Pi(x_ij, Vec2(n_w * n_w.dot(v_ij)), rho_bar);
+    case WallFriction::dissipation:
+      break;
+  }
+  return Pi(x_ij, v_ij, rho_bar);
+}
 
 }  // namespace cosph::fluid

@@ -134,6 +134,7 @@ void rest_walls_out_of_reach(FluidParticles& P, const std::vector<int>& walls_in
     P.p[w] = 0.0;
     P.rho[w] = eos.rho0();
     P.tau[w] = Mat2::Zero();
+    P.wall_n[w] = Vec2::Zero();
   }
 }
 
@@ -163,6 +164,8 @@ void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid,
     // the pow().
     P.rho[w] = P.p[w] == 0.0 ? eos.rho0() : eos.density(P.p[w]);
     P.tau[w] = Mat2::Zero();
+    const double moment = sum.moment.norm();
+    P.wall_n[w] = moment > 0.0 ? Vec2(-sum.moment / moment) : Vec2::Zero();
   });
 }
 
@@ -201,7 +204,8 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
       Vec2* const a = P.a.data();
       const auto share = shares.block_shares(b, a);
       const MomentumDissipation<dissipation> Pi = Pi_of;
-      const bool wall_friction = par.wall_friction;
+      const WallFriction wall_friction = par.wall_friction;
+      const Vec2* const wall_n = P.wall_n.data();
       const long begin = shares.begin(b), end = shares.end(b);
       for (long i = begin; i < end; ++i) a[i].setZero();
       for (long i = begin; i < end; ++i) {
@@ -211,10 +215,10 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
         const SymmetricStress sigma_i = sigma[i];
         const auto bracket_times_gradient_of = [&](int j, double F_ij) {
           const Vec2 x_ij = x_i - x[j];
-          // Free-slip walls (fluid.wall_friction "none"): no dissipation against them.
-          const double Pi_ij = wall_friction || kind[j] == Kind::water
+          const double Pi_ij = wall_friction == WallFriction::dissipation || kind[j] == Kind::water
                                    ? Pi(x_ij, v_i - v[j], 0.5 * (rho_i + rho[j]))
-                                   : 0.0;
+                                   : wall_dissipation(Pi, wall_friction, x_ij, v_i - v[j],
+                                                      wall_n[j], 0.5 * (rho_i + rho[j]));
           return sph::bracket_times_gradient(sigma_i, sigma[j], inverse_rho_i, inverse_rho[j],
                                              Pi_ij, F_ij * x_ij);
         };
@@ -267,8 +271,8 @@ std::vector<Vec2> forces_on_walls(const FluidParticles& P, const sph::NeighbourL
         const int j = neighbours[k];
         if (P.is_water(j)) continue;
         const Vec2 x_ij = P.x[i] - P.x[j];
-        const double Pi_ij =
-            par.wall_friction ? Pi_of(x_ij, P.v[i] - P.v[j], 0.5 * (P.rho[i] + P.rho[j])) : 0.0;
+        const double Pi_ij = wall_dissipation(Pi_of, par.wall_friction, x_ij, P.v[i] - P.v[j],
+                                              P.wall_n[j], 0.5 * (P.rho[i] + P.rho[j]));
         force[P.wall_of(j)] -= P.m[i] * P.m[j] *
                                sph::bracket_times_gradient(P.sigma[i], P.sigma[j], P.inverse_rho[i],
                                                            P.inverse_rho[j], Pi_ij, F[k] * x_ij);

@@ -56,11 +56,14 @@ FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
       case_file, "fluid.shifting",
       "unknown particle shifting '" + fluid.shifting() + "' (known: none, delta_plus)");
   p.delta_plus_shifting = fluid.shifting() == "delta_plus";
-  require(fluid.wall_friction().empty() || fluid.wall_friction() == "dissipation" ||
-              fluid.wall_friction() == "none",
-          case_file, "fluid.wall_friction",
-          "unknown wall friction '" + fluid.wall_friction() + "' (known: dissipation, none)");
-  p.wall_friction = fluid.wall_friction() != "none";
+  const std::string& friction = fluid.wall_friction();
+  require(
+      friction.empty() || friction == "dissipation" || friction == "none" || friction == "normal",
+      case_file, "fluid.wall_friction",
+      "unknown wall friction '" + friction + "' (known: dissipation, none, normal)");
+  p.wall_friction = friction == "none"     ? WallFriction::none
+                    : friction == "normal" ? WallFriction::normal
+                                           : WallFriction::dissipation;
 
   require(fluid.water_size() > 0, case_file, "fluid.water", "no water region given");
   p.water = sph::read_regions(fluid.water(), case_file, "fluid.water");

@@ -33,8 +33,8 @@ struct FluidParameters {
   Dissipation dissipation = Dissipation::delta_sph;
   sph::kernel::Shape kernel = sph::kernel::Shape::cubic_spline;
   bool delta_plus_shifting = false;  // particle_shifting.hpp
-  // fluid.wall_friction: the momentum dissipation term acts against walls too.
-  bool wall_friction = true;
+  // fluid.wall_friction: how the momentum dissipation term acts against walls.
+  WallFriction wall_friction = WallFriction::dissipation;
 };
 
 // Throws sph::ConfigError naming the file, field and reason for bad input.

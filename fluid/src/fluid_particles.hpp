@@ -56,6 +56,9 @@ struct FluidParticles {
   // around the particle too sparse to renormalise (sph::can_renormalise).
   // FluidSolver::is_spray adds that no solid is in reach either.
   std::vector<std::uint8_t> spray;
+  // Walls: the unit normal towards the water in reach, -sum_f rho_f (x_w - x_f)
+  // W_wf normalised (the wall pressure's moment); zero with none in reach.
+  std::vector<Vec2> wall_n;
   // 1 for water on the free surface as particle shifting sees it
   // (DeltaPlusShifting::on_surface).
   std::vector<std::uint8_t> on_surface;
@@ -103,6 +106,7 @@ struct FluidParticles {
     shift.assign(n, Vec2::Zero());
     external_drho.assign(n, 0.0);
     spray.assign(n, 0);
+    wall_n.assign(n, Vec2::Zero());
   }
 
   // Puts the fields marked as state above into `order`, the neighbour
@@ -116,7 +120,7 @@ struct FluidParticles {
   // with everything known of them.
   void keep_only(const std::vector<int>& kept) {
     sph::permute(kept, id, kind, x, v, rho, m, grad_rho, p, tau, sigma, inverse_rho, grad_rho_next,
-                 volume, a, drho, external_a, shift, external_drho, spray, x_drawn, wall_a);
+                 volume, a, drho, external_a, shift, external_drho, spray, x_drawn, wall_a, wall_n);
   }
 };
 

@@ -195,7 +195,8 @@ INSTANTIATE_TEST_SUITE_P(
                       Settings{"fluid.dissipation=fourtakas"},
                       Settings{"fluid.dissipation=riemann"},
                       Settings{"fluid.kernel=wendland_c2", "fluid.h_factor=1.5"},
-                      Settings{"fluid.shifting=delta_plus"}, Settings{"fluid.wall_friction=none"}));
+                      Settings{"fluid.shifting=delta_plus"}, Settings{"fluid.wall_friction=none"},
+                      Settings{"fluid.wall_friction=normal"}));
 
 }  // namespace
 }  // namespace cosph::fluid

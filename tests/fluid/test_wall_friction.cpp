@@ -2,11 +2,12 @@
 // equation's dissipation term acts between the water and its walls and brakes
 // water sliding along a wall; with "none" (free-slip walls) it is left out
 // against walls, in the water's accelerations and in the force on the wall
-// alike, and nothing else changes.
+// alike; with "normal" it acts on the approach along the wall's normal only.
 #include <gtest/gtest.h>
 
 #include <string>
 
+#include "equation_of_state.hpp"
 #include "fluid_dynamics.hpp"
 #include "fluid_parameters.hpp"
 #include "fluid_test_support.hpp"
@@ -21,17 +22,20 @@ using testing::water_parameters;
 
 const std::string kDamBreak = std::string(COSPH_SOURCE_DIR) + "/cases/dam_break.pbtxt";
 
-// Water at rest density sliding at 1 m/s along a floor of wall particles, no
+// Water at rest density moving at VELOCITY over a floor of wall particles, no
 // gravity and no pressure anywhere: within the water nothing moves relative
-// to anything, so any force along the floor is the walls' friction.
-struct SlidingWater {
+// to anything, so any force between water and floor is the walls'
+// dissipation. `braking` is the largest deceleration along VELOCITY of a water
+// particle away from the block's ends (x in 0.08-0.22 m), where the floor's
+// normal is straight up.
+struct WaterOverAFloor {
   FluidParticles P;
   Neighbourhood n;
-  double largest_braking = 0.0;  // the largest -a_x of a water particle, m/s^2
+  double braking = 0.0;  // m/s^2
   Vec2 force_on_floor = Vec2::Zero();
   int water = 0;
 
-  explicit SlidingWater(bool wall_friction) {
+  WaterOverAFloor(WallFriction wall_friction, const Vec2& velocity) {
     FluidParameters p = water_parameters(0.01);
     p.wall_friction = wall_friction;
     p.B = 0.0;
@@ -40,7 +44,7 @@ struct SlidingWater {
       for (int j = 0; j < rows; ++j) {
         P.add(water, Kind::water, Vec2((i + 0.5) * p.dx, (j + 0.5) * p.dx), p.rho0,
               p.rho0 * p.dx * p.dx);
-        P.v.back() = Vec2(1.0, 0.0);
+        P.v.back() = velocity;
         ++water;
       }
     int id = water;
@@ -52,29 +56,52 @@ struct SlidingWater {
     sort_and_find_neighbours(P, p, n);
     compute_continuity_and_gradients(P, n.pairs, p);
     for (std::size_t i = 0; i < P.size(); ++i) P.p[i] = 0.0;
+    const TaitEquationOfState eos(p.rho0, p.c0);
+    compute_wall_pressure(P, n.grid, walls_in_reach(P, n.grid, sph::kernel::kSupport * p.h), p,
+                          eos);
     compute_accelerations(P, n.pairs, p);
+    const Vec2 along = velocity.normalized();
     for (std::size_t i = 0; i < P.size(); ++i)
-      if (P.is_water(i)) largest_braking = std::max(largest_braking, -P.a[i].x());
+      if (P.is_water(i) && P.x[i].x() > 0.08 && P.x[i].x() < 0.22)
+        braking = std::max(braking, -P.a[i].dot(along));
     force_on_floor = forces_on_walls(P, n.pairs, p).at(0);
   }
 };
 
+const Vec2 kSliding(1.0, 0.0), kFalling(0.0, -1.0);  // m/s
+
 TEST(WallFriction, TheDissipationAgainstAWallBrakesWaterSlidingAlongIt) {
-  const SlidingWater with(true);
-  EXPECT_GT(with.largest_braking, 1.0);      // m/s^2: the first rows are braked
+  const WaterOverAFloor with(WallFriction::dissipation, kSliding);
+  EXPECT_GT(with.braking, 1.0);              // m/s^2: the first rows are braked
   EXPECT_GT(with.force_on_floor.x(), 1e-3);  // N/m: dragged along by the water
 }
 
 TEST(WallFriction, FreeSlipWallsLeaveSlidingWaterAlone) {
-  const SlidingWater free_slip(false);
-  EXPECT_LT(free_slip.largest_braking, 1e-9);
-  EXPECT_LT(std::abs(free_slip.force_on_floor.x()), 1e-9);
+  const WaterOverAFloor none(WallFriction::none, kSliding);
+  EXPECT_LT(none.braking, 1e-9);
+  EXPECT_LT(std::abs(none.force_on_floor.x()), 1e-9);
+  // Along the normal only: nothing of sliding along a flat floor either.
+  const WaterOverAFloor normal(WallFriction::normal, kSliding);
+  EXPECT_LT(normal.braking, 1e-9);
+}
+
+TEST(WallFriction, AlongTheNormalOnlyStillDampsWaterRunningIntoTheWall) {
+  const WaterOverAFloor with(WallFriction::dissipation, kFalling);
+  const WaterOverAFloor normal(WallFriction::normal, kFalling);
+  const WaterOverAFloor none(WallFriction::none, kFalling);
+  EXPECT_GT(with.braking, 1.0);
+  EXPECT_NEAR(normal.braking, with.braking, 1e-9 * with.braking);
+  EXPECT_LT(none.braking, 1e-9);
 }
 
 TEST(WallFriction, IsReadFromTheCaseAndAnUnknownValueIsRefusedNamingTheField) {
-  EXPECT_TRUE(read_fluid_parameters(sph::load_case(kDamBreak, {})).wall_friction);
-  EXPECT_FALSE(
-      read_fluid_parameters(sph::load_case(kDamBreak, {"fluid.wall_friction=none"})).wall_friction);
+  const auto friction = [](const std::string& setting) {
+    return read_fluid_parameters(sph::load_case(kDamBreak, {setting})).wall_friction;
+  };
+  EXPECT_EQ(read_fluid_parameters(sph::load_case(kDamBreak, {})).wall_friction,
+            WallFriction::dissipation);
+  EXPECT_EQ(friction("fluid.wall_friction=none"), WallFriction::none);
+  EXPECT_EQ(friction("fluid.wall_friction=normal"), WallFriction::normal);
   try {
     read_fluid_parameters(sph::load_case(kDamBreak, {"fluid.wall_friction=slip"}));
     FAIL() << "an unknown wall friction was accepted";
