@@ -215,6 +215,7 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
         const SymmetricStress sigma_i = sigma[i];
         const auto bracket_times_gradient_of = [&](int j, double F_ij) {
           const Vec2 x_ij = x_i - x[j];
+          // The default's test first: it spares the pair loop a load of kind[j].
           const double Pi_ij = wall_friction == WallFriction::dissipation || kind[j] == Kind::water
                                    ? Pi(x_ij, v_i - v[j], 0.5 * (rho_i + rho[j]))
                                    : wall_dissipation(Pi, wall_friction, x_ij, v_i - v[j],
