@@ -32,6 +32,7 @@ wall_pressure_2d_reference.png.
 
 usage: /usr/bin/python3 scripts/validate_wall_pressure.py [--out DIR] [--reuse]
 """
+import functools
 import os
 
 import matplotlib
@@ -52,17 +53,16 @@ RECORD = (2.0, 7.3)           # t*: the experiment's record
 PLATEAU = (3.3, 5.2)          # t*: between the impact and the jet's return
 RISE = 0.2                    # p / (rho g H)
 COARSE, FINE = 0.012, 0.006   # m: H / 50, H / 100
-# The default and the quietest option on the plateau again with the other
-# walls of fluid.wall_friction: (key suffix, label suffix, settings).
+# The default and the quietest option on the plateau (WALLS_OF) again with
+# the other walls of fluid.wall_friction: (key suffix, label suffix, settings).
 WALLS = [("_free_slip", ", free-slip walls", ["fluid.wall_friction=none"]),
          ("_normal", ", walls damping along their normal only", ["fluid.wall_friction=normal"])]
 FREE_SLIP_SUFFIX = WALLS[0][0]
-FREE_SLIP_OF = ("delta_sph", "riemann_wendland_2dx")
+WALLS_OF = ("delta_sph", "riemann_wendland_2dx")
 # De Courcy et al. 2024's sensors: (timeseries column, height in mm, file).
 REFERENCE_2D = [(f"probe{k}_pressure", mm, f"decourcy2024_wall_pressure_y{mm:03d}mm.csv")
                 for k, mm in ((1, 6), (2, 30), (3, 60), (0, 160))]
 RECORD_2D = (2.3, 7.0)        # t*: its record
-LOAD_2D = (3.3, 5.2)          # t*: the load after the impact, as PLATEAU
 IMPACT = 0.5                  # p / (rho g H): the impact has reached the lowest sensor
 
 
@@ -81,8 +81,8 @@ def measure(out, t_exp, p_exp):
     load, inner = cr.running_mean(p, width)
     t_star, p_star, load_star = t / T_SCALE, p / P_SCALE, load / P_SCALE
     record = (t_exp >= RECORD[0]) & (t_exp <= RECORD[1])
-    rms_read = np.sqrt(np.mean((np.interp(t_exp, t_star, p_star) - p_exp)[record] ** 2))
-    rms_load = np.sqrt(np.mean((np.interp(t_exp, t_star[inner], load_star) - p_exp)[record] ** 2))
+    rms_read = cr.rms_error(t_star, p_star, t_exp[record], p_exp[record])
+    rms_load = cr.rms_error(t_star[inner], load_star, t_exp[record], p_exp[record])
     mean, noise = cr.pressure_noise(t, p, NOISE_WINDOW, P_SCALE, PLATEAU[0] * T_SCALE,
                                     PLATEAU[1] * T_SCALE)
     rise = t_star[inner][np.argmax(load_star > RISE)] if np.any(load_star > RISE) else np.nan
@@ -92,6 +92,7 @@ def measure(out, t_exp, p_exp):
             "against_2d": against_reference_2d(series, width)}
 
 
+@functools.cache
 def reference_2d():
     """De Courcy et al. 2024's sensors: [(column, mm, t*, p*)], each sorted in
     time (a curve traced off a figure steps back here and there)."""
@@ -121,10 +122,9 @@ def against_reference_2d(series, width):
         load, inner = cr.running_mean(series[column] / P_SCALE, width)
         t_load = t_star[inner]
         record = (t_ref >= RECORD_2D[0]) & (t_ref <= min(RECORD_2D[1], t_load[-1]))
-        rms = float(np.sqrt(np.mean((np.interp(t_ref[record], t_load, load) -
-                                     p_ref[record]) ** 2)))
-        sensors.append({"mm": mm, "rms": rms, "load": window_mean(t_load, load, LOAD_2D),
-                        "load_ref": window_mean(t_ref, p_ref, LOAD_2D), "t": t_load,
+        rms = cr.rms_error(t_load, load, t_ref[record], p_ref[record])
+        sensors.append({"mm": mm, "rms": rms, "load": window_mean(t_load, load, PLATEAU),
+                        "load_ref": window_mean(t_ref, p_ref, PLATEAU), "t": t_load,
                         "p": load, "impact": t_load[np.argmax(load > IMPACT)],
                         "impact_ref": t_ref[np.argmax(p_ref > IMPACT)]})
     return sensors
@@ -163,7 +163,7 @@ def main():
     t_exp, p_exp = experiment()
     results = {}
     options = OPTIONS + [(key + suffix, label + label_suffix, settings + walls)
-                         for key, label, settings in OPTIONS if key in FREE_SLIP_OF
+                         for key, label, settings in OPTIONS if key in WALLS_OF
                          for suffix, label_suffix, walls in WALLS]
     for spacing in (COARSE, FINE):
         for key, label, settings in options:
@@ -238,7 +238,7 @@ def write_against_reference_2d(results, labels):
                 [f"{reference[0]['load_ref']:.2f}", f"{reference[0]['impact_ref']:.2f}"])
     header = (["option", "spacing (mm)"] +
               [f"RMS vs the 2-D solution, {sensor['mm']} mm up" for sensor in reference] +
-              [f"load at 6 mm (t* {LOAD_2D[0]}-{LOAD_2D[1]})",
+              [f"load at 6 mm (t* {PLATEAU[0]}-{PLATEAU[1]})",
                f"impact at 6 mm: t* where the load passes {IMPACT}"])
     preamble = (
         "Written by `scripts/validate_wall_pressure.py`. The runs of the table above (and the "
@@ -279,7 +279,7 @@ def write_front(args):
     T_exp, Z_exp = experiment["T_t_sqrt_2g_over_a"], experiment["Z_z_over_a"]
     window = T_exp <= dam.T_LAST
     end_time = dam.AFTER_IMPACT[1] + 0.01
-    waters = [(key, label, settings) for key, label, settings in OPTIONS if key in FREE_SLIP_OF]
+    waters = [(key, label, settings) for key, label, settings in OPTIONS if key in WALLS_OF]
     rows = []
     for key, label, settings in waters:
         for spacing in (0.008, 0.004):

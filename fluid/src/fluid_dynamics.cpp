@@ -164,8 +164,10 @@ void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid,
     // the pow().
     P.rho[w] = P.p[w] == 0.0 ? eos.rho0() : eos.density(P.p[w]);
     P.tau[w] = Mat2::Zero();
-    const double moment = sum.moment.norm();
-    P.wall_n[w] = moment > 0.0 ? Vec2(-sum.moment / moment) : Vec2::Zero();
+    if (par.wall_friction == WallFriction::normal) {  // only that option reads it
+      const double moment = sum.moment.norm();
+      P.wall_n[w] = moment > 0.0 ? Vec2(-sum.moment / moment) : Vec2::Zero();
+    }
   });
 }
 
@@ -214,12 +216,13 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
         const double m_i = m[i], rho_i = rho[i], inverse_rho_i = inverse_rho[i];
         const SymmetricStress sigma_i = sigma[i];
         const auto bracket_times_gradient_of = [&](int j, double F_ij) {
-          const Vec2 x_ij = x_i - x[j];
+          const Vec2 x_ij = x_i - x[j], v_ij = v_i - v[j];
+          const double rho_ij = 0.5 * (rho_i + rho[j]);
           // The default's test first: it spares the pair loop a load of kind[j].
-          const double Pi_ij = wall_friction == WallFriction::dissipation || kind[j] == Kind::water
-                                   ? Pi(x_ij, v_i - v[j], 0.5 * (rho_i + rho[j]))
-                                   : wall_dissipation(Pi, wall_friction, x_ij, v_i - v[j],
-                                                      wall_n[j], 0.5 * (rho_i + rho[j]));
+          const double Pi_ij =
+              wall_friction == WallFriction::dissipation || kind[j] == Kind::water
+                  ? Pi(x_ij, v_ij, rho_ij)
+                  : wall_dissipation(Pi, wall_friction, x_ij, v_ij, wall_n[j], rho_ij);
           return sph::bracket_times_gradient(sigma_i, sigma[j], inverse_rho_i, inverse_rho[j],
                                              Pi_ij, F_ij * x_ij);
         };

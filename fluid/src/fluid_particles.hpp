@@ -58,6 +58,7 @@ struct FluidParticles {
   std::vector<std::uint8_t> spray;
   // Walls: the unit normal towards the water in reach, -sum_f rho_f (x_w - x_f)
   // W_wf normalised (the wall pressure's moment); zero with none in reach.
+  // Kept only with fluid.wall_friction "normal", the one option that reads it.
   std::vector<Vec2> wall_n;
   // 1 for water on the free surface as particle shifting sees it
   // (DeltaPlusShifting::on_surface).

@@ -109,13 +109,13 @@ void FluidSolver::advance_state(double dt) {
         for (long i = begin; i < end; ++i) {
           if (kind[i] == Kind::moving_wall) {
             place_moving_wall(static_cast<std::size_t>(i), time_ + dt, time_ + half);
-            largest = std::max(largest, (x[i] - x_at_sort[i]).squaredNorm());
+            largest = std::max(largest, sph::SortedVerletList::moved2(x[i], x_at_sort[i]));
             continue;
           }
           if (kind[i] != Kind::water) continue;  // fixed walls
           v[i] += half * (a[i] + external_a[i]);
           x[i] += dt * v[i] + shift[i];
-          largest = std::max(largest, (x[i] - x_at_sort[i]).squaredNorm());
+          largest = std::max(largest, sph::SortedVerletList::moved2(x[i], x_at_sort[i]));
         }
         return largest;
       });

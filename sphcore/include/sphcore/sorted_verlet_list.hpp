@@ -56,7 +56,12 @@ class SortedVerletList {
   const std::vector<Vec2>& x_at_sort() const { return x_at_sort_; }
 
   // The squared distance particle i, now at x_i, has moved since the last sort.
-  double moved2(const Vec2& x_i, long i) const { return (x_i - x_at_sort_[i]).squaredNorm(); }
+  double moved2(const Vec2& x_i, long i) const { return moved2(x_i, x_at_sort_[i]); }
+  // The same, from its place at the sort (x_at_sort()[i]): for a loop that
+  // holds that array in a local.
+  static double moved2(const Vec2& x_i, const Vec2& x_at_sort_i) {
+    return (x_i - x_at_sort_i).squaredNorm();
+  }
   // True when a particle that moved sqrt(largest_moved2) may have a neighbour
   // the list misses: then sort.
   bool stale(double largest_moved2) const { return largest_moved2 > rebuild_at_ * rebuild_at_; }
