@@ -70,6 +70,10 @@ CrossPhaseParameters read_cross_phase_parameters(const sph::CaseFile& case_file)
     par.riemann_dissipation = true;
     par.rho0 = sph::read_density(case_file, "fluid", case_file.config.fluid().density());
   }
+  // With its own wall friction too: a numerical friction left out against the
+  // tank's walls is left out against the solid's.
+  if (par.model == InterfaceModel::moving_wall)
+    par.wall_friction = cosph::fluid::read_wall_friction(case_file);
   // And through its own kernel, as its wall pressure and wall pairs are
   // taken. The stress sum meets the solid's stress, whose pairs are all
   // cubic spline, and keeps that kernel.

@@ -27,9 +27,16 @@
 // Riemann solver's limited dissipation, and drho_f gains the Riemann density
 // term against the wall's side mirroring the water particle,
 //   P_s = P_f + rho_f (g - a_w) . (x_s - x_f).
+// And with the water's fluid.wall_friction, Pi_fs acts as against its own
+// walls (fluid/src/dissipation.hpp, wall_dissipation): on the whole relative
+// velocity (dissipation), not at all (none), or on its part along the solid
+// particle's normal n_s only (normal), n_s pointing to the water from the
+// moment sum P_w is extrapolated with, as the water takes its walls' normals.
 #pragma once
 
 #include <vector>
+
+#include "dissipation.hpp"
 
 #include "sphcore/interface_particles.hpp"
 #include "sphcore/kernel_shape.hpp"
@@ -51,6 +58,8 @@ struct CrossPhaseParameters {
   // their 1 / (rho0 c0); c0 is the sound speed the fluid sends.
   bool riemann_dissipation = false;
   double rho0 = 1000.0;
+  // moving_wall: the water's fluid.wall_friction.
+  fluid::WallFriction wall_friction = fluid::WallFriction::dissipation;
   // The kernel of every pair's W and grad W (fluid.kernel for the moving
   // wall); the pairs are those within its support 2 h_fs, for either shape.
   sph::kernel::Shape kernel = sph::kernel::Shape::cubic_spline;

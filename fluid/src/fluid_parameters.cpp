@@ -21,6 +21,16 @@ Dissipation read_dissipation(const sph::CaseFile& case_file) {
                                : Dissipation::delta_sph;
 }
 
+WallFriction read_wall_friction(const sph::CaseFile& case_file) {
+  const std::string& name = case_file.config.fluid().wall_friction();
+  require(name.empty() || name == "dissipation" || name == "none" || name == "normal", case_file,
+          "fluid.wall_friction",
+          "unknown wall friction '" + name + "' (known: dissipation, none, normal)");
+  return name == "none"     ? WallFriction::none
+         : name == "normal" ? WallFriction::normal
+                            : WallFriction::dissipation;
+}
+
 sph::kernel::Shape read_kernel_shape(const sph::CaseFile& case_file) {
   const std::string& name = case_file.config.fluid().kernel();
   require(name.empty() || name == "cubic_spline" || name == "wendland_c2", case_file,
@@ -56,14 +66,7 @@ FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
       case_file, "fluid.shifting",
       "unknown particle shifting '" + fluid.shifting() + "' (known: none, delta_plus)");
   p.delta_plus_shifting = fluid.shifting() == "delta_plus";
-  const std::string& friction = fluid.wall_friction();
-  require(
-      friction.empty() || friction == "dissipation" || friction == "none" || friction == "normal",
-      case_file, "fluid.wall_friction",
-      "unknown wall friction '" + friction + "' (known: dissipation, none, normal)");
-  p.wall_friction = friction == "none"     ? WallFriction::none
-                    : friction == "normal" ? WallFriction::normal
-                                           : WallFriction::dissipation;
+  p.wall_friction = read_wall_friction(case_file);
 
   require(fluid.water_size() > 0, case_file, "fluid.water", "no water region given");
   p.water = sph::read_regions(fluid.water(), case_file, "fluid.water");

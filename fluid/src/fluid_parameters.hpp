@@ -44,6 +44,10 @@ FluidParameters read_fluid_parameters(const sph::CaseFile& case_file);
 // coupler reads it too, to meet the solid with the water's wall terms.
 Dissipation read_dissipation(const sph::CaseFile& case_file);
 
+// fluid.wall_friction alone, likewise: the coupler meets the solid with the
+// water's wall friction, as a moving wall.
+WallFriction read_wall_friction(const sph::CaseFile& case_file);
+
 // fluid.kernel alone, likewise: the coupler pairs the water with the solid
 // through the water's kernel.
 sph::kernel::Shape read_kernel_shape(const sph::CaseFile& case_file);

@@ -389,6 +389,65 @@ TEST(CrossPhaseForces, TheCaseRiemannDissipationReachesTheMovingWall) {
                    .riemann_dissipation);
 }
 
+// fluid.wall_friction on the moving wall, as against the water's own walls:
+// water at rest against a still plate slides along it (u in y). With the
+// friction the plate is dragged along with the water and the water braked;
+// with "none" nothing acts, and with "normal" nothing acts along the plate
+// where its normal is the x axis (away from its ends, whose normals tilt).
+// Water running into the plate (u in x) meets the same damping there with
+// "normal" as with the friction.
+TEST(CrossPhaseForces, MovingWallTakesTheWatersWallFriction) {
+  using cosph::fluid::WallFriction;
+  const double L = 0.03, dx = 1e-3, u = 0.5;
+  const auto S = block(0.0, 0.01, L, dx, 1100.0, 0.0);
+  const auto with = [&](WallFriction friction, const Vec2& v) {
+    auto F = block(-0.02, 0.0, L, dx, 1000.0, 0.0);
+    for (Vec2& v_f : F.v) v_f = v;
+    CrossPhaseParameters par = kWall;
+    par.wall_friction = friction;
+    return compute_cross_phase_forces(F, S, par);
+  };
+  const Vec2 sliding(0.0, u), running_in(u, 0.0);
+  const CrossPhaseForces dragged = with(WallFriction::dissipation, sliding);
+  const CrossPhaseForces slid = with(WallFriction::normal, sliding);
+  EXPECT_GT(dragged.force_on_solid.y(), 0.0);
+  EXPECT_EQ(with(WallFriction::none, sliding).force_on_solid.norm(), 0.0);
+  const CrossPhaseForces full = with(WallFriction::dissipation, running_in);
+  const CrossPhaseForces normal = with(WallFriction::normal, running_in);
+  EXPECT_GT(full.force_on_solid.x(), 0.0);
+  EXPECT_EQ(with(WallFriction::none, running_in).force_on_solid.norm(), 0.0);
+
+  const double reach = S.h[0] + 1.3 * dx;
+  int away_from_the_ends = 0;
+  for (std::size_t s = 0; s < S.size(); ++s) {
+    if (std::abs(S.x[s].y() - 0.5 * L) > 0.5 * L - 2.0 * reach) continue;
+    if (S.x[s].x() < dx) {  // the first column: within reach of the water
+      EXPECT_GT(dragged.solid_a[s].y(), 0.0) << "solid " << s;
+    }
+    EXPECT_NEAR(slid.solid_a[s].y(), 0.0, 1e-9 * std::abs(dragged.solid_a[s].y())) << "solid " << s;
+    EXPECT_NEAR(normal.solid_a[s].x(), full.solid_a[s].x(), 1e-9 * std::abs(full.solid_a[s].x()))
+        << "solid " << s;
+    ++away_from_the_ends;
+  }
+  EXPECT_GT(away_from_the_ends, 0);
+}
+
+// The coupler takes the water's wall friction from the case, for the moving
+// wall only.
+TEST(CrossPhaseForces, TheCaseWallFrictionReachesTheMovingWall) {
+  using cosph::fluid::WallFriction;
+  const std::string plate = std::string(COSPH_SOURCE_DIR) + "/cases/elastic_plate.pbtxt";
+  const auto friction = [&](const std::vector<std::string>& settings) {
+    return cosph::coupler::read_coupler_settings(sph::load_case(plate, settings))
+        .cross_phase.wall_friction;
+  };
+  EXPECT_EQ(friction({}), WallFriction::dissipation);
+  EXPECT_EQ(friction({"fluid.wall_friction=none"}), WallFriction::none);
+  EXPECT_EQ(friction({"fluid.wall_friction=normal"}), WallFriction::normal);
+  EXPECT_EQ(friction({"fluid.wall_friction=normal", "coupling.interface=stress_sum"}),
+            WallFriction::dissipation);
+}
+
 // A kernel's W(r, h) and dW/dr(r, h), to write the moving wall's terms out.
 struct KernelFunctions {
   double (*W)(double, double);
