@@ -42,9 +42,10 @@ RUNS = [("the case (sub-steps chosen automatically)", "auto", []),
         ("multi-rate, run.cfl 0.3", "multirate_cfl03", MULTIRATE + ["run.cfl=0.3"]),
         # The walls' numerical friction (docs/physics.md, "Artificial viscosity")
         # left out against the tank and the plate alike: the case otherwise as it is.
-        ("walls and plate damping along their normal only (fluid.wall_friction normal)",
+        # The chart names a point by its label's last part.
+        ("walls and plate damping along their normal only, fluid.wall_friction normal",
          "friction_normal", ["fluid.wall_friction=normal"]),
-        ("free-slip walls and plate (fluid.wall_friction none)", "friction_none",
+        ("free-slip walls and plate, fluid.wall_friction none", "friction_none",
          ["fluid.wall_friction=none"]),
         ("study's interface rule (stress_sum)", "stress_sum",
          SYNCHRONISED + ["coupling.interface=stress_sum"])]

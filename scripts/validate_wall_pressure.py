@@ -17,15 +17,17 @@ and p / (rho g H):
   - the first time the running mean passes 0.2 (the experiment's rise);
   - wall and CPU time, one thread.
 The same runs, with the other walls of fluid.wall_friction too ("none":
-free-slip; "normal": damping along their normal only) for the default and
-the quietest option, against a converged two-dimensional solution
+free-slip; "normal": damping along their normal only) for the options of
+WALLS_OF, against a converged two-dimensional solution
 of this flow (De Courcy et al. 2024, H / dx = 400;
 validation/reference/decourcy2024_wall_pressure_*.csv) at its four sensors on
 the far wall, 6, 30, 60 and 160 mm up: the RMS difference of each sensor's
 running mean, the load after the impact at the lowest, and when the impact
 reaches it. And the dam break's front against Martin & Moyce (the front's
-RMS relative error, T <= 3.1) and its far-wall sensor with each wall
-friction, at 8 and 4 mm.
+RMS relative error, T <= 3.1) and its far-wall sensor at 8 and 4 mm, for
+every water with the walls' friction and with walls damping along their
+normal, those of WALLS_OF also with free-slip walls, with each
+run's CPU time per simulated second.
 Writes docs/results/wall_pressure.md, wall_pressure_2d_reference.md,
 wall_friction_front.md and docs/figures/wall_pressure.png,
 wall_pressure_2d_reference.png.
@@ -53,12 +55,14 @@ RECORD = (2.0, 7.3)           # t*: the experiment's record
 PLATEAU = (3.3, 5.2)          # t*: between the impact and the jet's return
 RISE = 0.2                    # p / (rho g H)
 COARSE, FINE = 0.012, 0.006   # m: H / 50, H / 100
-# The default and the quietest option on the plateau (WALLS_OF) again with
-# the other walls of fluid.wall_friction: (key suffix, label suffix, settings).
+# The default, the Riemann solver with the Wendland C2 kernel (the cheapest
+# option quieter than the default with either walls) and the quietest option
+# on the plateau (WALLS_OF) again with the other walls of fluid.wall_friction:
+# (key suffix, label suffix, settings).
 WALLS = [("_free_slip", ", free-slip walls", ["fluid.wall_friction=none"]),
          ("_normal", ", walls damping along their normal only", ["fluid.wall_friction=normal"])]
 FREE_SLIP_SUFFIX = WALLS[0][0]
-WALLS_OF = ("delta_sph", "riemann_wendland_2dx")
+WALLS_OF = ("delta_sph", "riemann_wendland", "riemann_wendland_2dx")
 # De Courcy et al. 2024's sensors: (timeseries column, height in mm, file).
 REFERENCE_2D = [(f"probe{k}_pressure", mm, f"decourcy2024_wall_pressure_y{mm:03d}mm.csv")
                 for k, mm in ((1, 6), (2, 30), (3, 60), (0, 160))]
@@ -138,8 +142,9 @@ def quietest(results):
 
 
 def plateau_of_experiment(t_exp, p_exp):
-    inside = (t_exp >= PLATEAU[0]) & (t_exp <= PLATEAU[1])
-    return float(np.mean(p_exp[inside]))
+    """The experiment's load on the plateau, a time mean as the 2-D reference's
+    (its points are not evenly spaced in time)."""
+    return window_mean(t_exp, p_exp, PLATEAU)
 
 
 def draw(runs, t_exp, p_exp, path):
@@ -203,7 +208,8 @@ def main():
         "5.366 H away), the pressure sensor P1 on the far wall 0.16 m up, against the "
         "experiment (validation/reference/buchner2002_wall_pressure_p1.csv), in "
         "t* = t sqrt(g/H) and p / (rho g H), for the water's options of "
-        "`scripts/pressure_noise.py`, and the default and the option quietest on the plateau "
+        "`scripts/pressure_noise.py`, and the default, the Riemann solver with the Wendland C2 "
+        "kernel and the option quietest on the plateau "
         "with the other walls of `fluid.wall_friction` (\"none\": free-slip; \"normal\": "
         "damping along their normal only), at H / 50 = 12 mm, and at "
         "H / 100 = 6 mm for the default, also with free-slip walls, and the quietest, also with "
@@ -242,7 +248,8 @@ def write_against_reference_2d(results, labels):
                f"impact at 6 mm: t* where the load passes {IMPACT}"])
     preamble = (
         "Written by `scripts/validate_wall_pressure.py`. The runs of the table above (and the "
-        "default and the quietest option with the other walls of `fluid.wall_friction`: "
+        "default, the Riemann solver with the Wendland C2 kernel and the quietest option with "
+        "the other walls of `fluid.wall_friction`: "
         "\"none\", free-slip, and \"normal\", damping along their normal only) "
         "against a converged two-dimensional solution of the same flow: De Courcy et al. 2024 "
         "(incompressible delta-SPH, H / dx = 400; validation/reference/"
@@ -279,12 +286,15 @@ def write_front(args):
     T_exp, Z_exp = experiment["T_t_sqrt_2g_over_a"], experiment["Z_z_over_a"]
     window = T_exp <= dam.T_LAST
     end_time = dam.AFTER_IMPACT[1] + 0.01
-    waters = [(key, label, settings) for key, label, settings in OPTIONS if key in WALLS_OF]
     rows = []
-    for key, label, settings in waters:
+    for key, label, settings in OPTIONS:
+        # Every water with walls damping along their normal; the default and
+        # the quietest with free-slip walls too.
+        walls_of_water = [w for w in WALLS if key in WALLS_OF or w[0] != FREE_SLIP_SUFFIX]
         for spacing in (0.008, 0.004):
             for walls, suffix, friction in [("dissipation (the default)", "", [])] + [
-                    (setting[0].split("=")[1], suffix, setting) for suffix, _, setting in WALLS]:
+                    (setting[0].split("=")[1], suffix, setting)
+                    for suffix, _, setting in walls_of_water]:
                 out = os.path.join(args.out, "dam_break", f"{key}{suffix}_{1e3 * spacing:g}mm")
                 cr.run_or_reuse("dam_break", out, settings + friction + [
                     f"fluid.spacing={spacing}", f"run.end_time={end_time:.2f}",
@@ -294,18 +304,23 @@ def write_front(args):
                 T, Z, _ = dam.dimensionless(series)
                 rms, worst = cr.rms_relative_error(T, Z, T_exp[window], Z_exp[window])
                 mean, noise = dam.sensor_noise(series, "probe1")
+                cpu = sum(cr.logged_cpu_times(out).values()) / end_time
                 rows.append([label, walls, f"{1e3 * spacing:g}", f"{100 * rms:.1f} %",
-                             f"{100 * worst:.1f} %", f"{mean:.3f}", f"{noise:.3f}"])
+                             f"{100 * worst:.1f} %", f"{mean:.3f}", f"{noise:.3f}", f"{cpu:.1f}"])
     preamble = (
         "Written by `scripts/validate_wall_pressure.py`. The dam break (`cases/dam_break.pbtxt`) "
-        "with the default water and the quietest option, each with every "
-        "`fluid.wall_friction`: the front against Martin & Moyce 1952 over T = t sqrt(2g/a) <= "
+        "with each water of `scripts/pressure_noise.py` with the walls' friction and with walls "
+        "damping along their normal only (`fluid.wall_friction` \"normal\"), and the default "
+        "water, the Riemann solver with the Wendland C2 kernel and the quietest option also "
+        "with free-slip walls (\"none\"): the front against Martin & Moyce 1952 over T = t sqrt(2g/a) <= "
         f"{dam.T_LAST}, and the far-wall sensor after the impact (t = {dam.AFTER_IMPACT[0]}-"
         f"{dam.AFTER_IMPACT[1]} s), its mean and noise over rho0 g H, as the dam break's own "
-        "tables measure them.")
+        "tables measure them; and the run's CPU time (all threads) per simulated second, whose "
+        "ratios give each option's cost (the runs' absolute times come from a shared machine).")
     cr.write_table("wall_friction_front", ["water", "fluid.wall_friction", "spacing (mm)",
                                            "front: RMS rel. error", "largest",
-                                           "far-wall sensor: mean", "noise"], rows, preamble)
+                                           "far-wall sensor: mean", "noise",
+                                           "CPU s per simulated s"], rows, preamble)
 
 if __name__ == "__main__":
     main()
