@@ -5,8 +5,10 @@ comes after it, then scripts/update_docs.py: what a change of a default
 asks, since every table says what the defaults give.
 
 Each step is run from scratch (its runs are made again, not reused), and its
-wall time is printed as it ends and kept in out/regenerate_results.json, so
-that the next regeneration can say how long it will take (--list).
+wall time is printed as it ends and kept in
+docs/results/regenerate_results_times.json, committed with the tables, so
+that the next regeneration, on any clone, can say how long it will take
+(--list).
 
   /usr/bin/python3 scripts/regenerate_results.py             every step
   /usr/bin/python3 scripts/regenerate_results.py --list      the steps and their last times
@@ -67,7 +69,7 @@ STEPS = [
     ("busy_machine", ["benchmark.py", "--busy", "--candidates"], "timing"),
     ("speed_accuracy", ["speed_accuracy.py"], "accuracy"),
 ]
-TIMES = os.path.join(cr.REPO, "out", "regenerate_results.json")
+TIMES = os.path.join(cr.RESULTS, "regenerate_results_times.json")
 
 
 def step_names():
@@ -88,6 +90,10 @@ def chosen_steps(args):
     if args.accuracy:
         steps = [step for step in steps if step[2] == "accuracy"]
     return steps
+
+
+def duration(seconds):
+    return f"{seconds:.0f} s" if seconds < 120 else f"{seconds / 60:.1f} min"
 
 
 def last_times():
@@ -114,10 +120,10 @@ def main():
     times = last_times()
     if args.list:
         for name, command, kind in steps:
-            last = f"{times[name] / 60:.1f} min last time" if name in times else "not timed yet"
+            last = f"{duration(times[name])} last time" if name in times else "not timed yet"
             print(f"{name:28s} {kind:9s} {' '.join(command):55s} {last}")
         known = [times[name] for name, _, _ in steps if name in times]
-        print(f"{len(steps)} steps; {sum(known) / 60:.0f} min for the {len(known)} timed")
+        print(f"{len(steps)} steps; {duration(sum(known))} for the {len(known)} timed")
         return
     for name, command, _ in steps:
         start = time.monotonic()
@@ -127,11 +133,10 @@ def main():
         if result.returncode != 0:
             raise SystemExit(f"regenerate_results: step {name} failed (exit "
                              f"{result.returncode}); rerun with --from {name}")
-        times[name] = time.monotonic() - start
-        os.makedirs(os.path.dirname(TIMES), exist_ok=True)
+        times[name] = round(time.monotonic() - start, 1)
         with open(TIMES, "w") as file:
             json.dump(times, file, indent=1)
-        print(f"regenerate_results: {name}: {times[name] / 60:.1f} min", flush=True)
+        print(f"regenerate_results: {name}: {duration(times[name])}", flush=True)
     subprocess.run([sys.executable, os.path.join(cr.REPO, "scripts", "update_docs.py")],
                    cwd=cr.REPO, check=True)
 

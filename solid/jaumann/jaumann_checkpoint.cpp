@@ -32,8 +32,6 @@ void visit_state(Particles& P, const Visit& visit) {
   visit("sigma_y", P.sigma_y);
   visit("clamped", P.clamped);
   visit("failed", P.failed);
-  visit("inert", P.inert);
-  visit("out_of_reach", P.out_of_reach);
   visit("external_a", P.external_a);
   visit("kick_a", P.kick_a);
   visit("p", P.p);
@@ -59,6 +57,7 @@ void JaumannSolver::save(sph::Checkpoint& checkpoint) const {
 void JaumannSolver::restore(const sph::Checkpoint& checkpoint) {
   JaumannParticles& P = particles_;
   visit_state(P, sph::CheckpointGet{checkpoint});
+  set_clamp_reach();  // the clamp's inert and out-of-reach particles, from x0
   std::vector<sph::Vec2> x_at_sort;
   checkpoint.get("x_at_sort", x_at_sort);
   sph::take_clock(checkpoint, time_, steps_);

@@ -63,10 +63,12 @@ void JaumannSolver::set_clamp_reach() {
   // free particle may come closer than it started; the margin for that is
   // one more support (a clamp's root moves little). Hence rates within two
   // supports of where the free particles start (the others are inert), and
-  // nothing at all beyond three: those are out of reach.
+  // nothing at all beyond three: those are out of reach. Taken from the
+  // start's positions x0, so that a restored run finds the same sets without
+  // storing them.
   const double support = sph::kernel::kSupport * parameters_.h;
-  P.inert = clamped_beyond(P.x, P.clamped, 2.0 * support);
-  P.out_of_reach = clamped_beyond(P.x, P.clamped, 3.0 * support);
+  P.inert = clamped_beyond(P.x0, P.clamped, 2.0 * support);
+  P.out_of_reach = clamped_beyond(P.x0, P.clamped, 3.0 * support);
 }
 
 void JaumannSolver::update_stress(Including including) {
