@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """The water's net force on the elastic plate and its noise, for the quieter
-fluid options of pressure_noise.py (issue 38, item 4).
+fluid options of pressure_noise.py (issue 38, item 4), and for three of them
+also without the walls' friction.
 
 Runs cases/elastic_plate.pbtxt as it is and with each option below set on its
 water, and measures as scripts/interface_acceleration.py does: the force on
@@ -22,7 +23,15 @@ OPTIONS = [("delta_sph", "the case: delta-SPH, cubic spline, h = 1.3 dx", []),
            ("riemann", "Riemann, cubic spline, h = 1.3 dx", ["fluid.dissipation=riemann"]),
            ("wendland_2dx", "delta-SPH, Wendland C2, h = 2 dx", pn.WENDLAND_2DX),
            ("riemann_wendland_2dx", "Riemann, Wendland C2, h = 2 dx",
-            ["fluid.dissipation=riemann"] + pn.WENDLAND_2DX)]
+            ["fluid.dissipation=riemann"] + pn.WENDLAND_2DX),
+           ("riemann_wendland", "Riemann, Wendland C2, h = 1.5 dx",
+            ["fluid.dissipation=riemann"] + pn.WENDLAND)]
+# The same waters without the walls' friction along the tank's walls and the
+# plate (fluid.wall_friction "normal", docs/physics.md, "Artificial viscosity").
+NORMAL_WALLS = ["fluid.wall_friction=normal"]
+OPTIONS += [(key + "_normal", label + ", walls and plate damping along their normal only",
+             settings + NORMAL_WALLS) for key, label, settings in OPTIONS
+            if key in ("delta_sph", "riemann_wendland", "riemann_wendland_2dx")]
 
 
 def main():
@@ -47,7 +56,9 @@ def main():
          "force on plate, mean (rho g H^2/2)", "its noise (rho g H^2/2)",
          "wall time (shared 2 cores)"],
         rows,
-        preamble="The elastic plate with the quieter water options of the dam break's table: "
+        preamble="The elastic plate with the quieter water options of the dam break's table, "
+                 "and three of them also without the friction along the tank's walls and the "
+                 "plate (`fluid.wall_friction` \"normal\"): "
                  "the force of the water on the plate and its noise (RMS about the running "
                  "mean over 0.1 sqrt(H/g), 0.02-0.4 s), over the water column's hydrostatic "
                  f"force rho g H^2 / 2 = {0.5 * ia.RHO * ia.G * ia.H ** 2:.0f} N/m, and the "
