@@ -5,8 +5,9 @@ Runs cases/dam_break_wall_pressure.pbtxt (H = 0.6 m, sensor P1 on the far
 wall 0.16 m up; validation/reference/buchner2002_wall_pressure_p1.csv) for
 each option of the water's dissipation, kernel and shifting that
 pressure_noise.py compares (its OPTIONS), at H / 50 = 12 mm, and at
-H / 100 = 6 mm for the default and for the option quietest on the plateau
-at 12 mm. For each run, in t* = t sqrt(g/H)
+H / 100 = 6 mm for the default, the Riemann solver with the Wendland C2 kernel
+with walls damping along their normal, and the option quietest on the
+plateau at 12 mm. For each run, in t* = t sqrt(g/H)
 and p / (rho g H):
   - the RMS difference from the experiment over its whole record
     (t* = 2.0-7.3), of the sensor as read and of its running mean over
@@ -172,8 +173,8 @@ def main():
                          for suffix, label_suffix, walls in WALLS]
     for spacing in (COARSE, FINE):
         for key, label, settings in options:
-            fine = ("delta_sph", "delta_sph" + FREE_SLIP_SUFFIX, "riemann_wendland_2dx",
-                    "riemann_wendland_2dx_normal", quietest(results))
+            fine = ("delta_sph", "delta_sph" + FREE_SLIP_SUFFIX, "riemann_wendland_normal",
+                    "riemann_wendland_2dx", "riemann_wendland_2dx_normal", quietest(results))
             if spacing == FINE and key not in fine:
                 continue
             out = os.path.join(args.out, f"{key}_{1e3 * spacing:g}mm")
@@ -212,7 +213,8 @@ def main():
         "kernel and the option quietest on the plateau "
         "with the other walls of `fluid.wall_friction` (\"none\": free-slip; \"normal\": "
         "damping along their normal only), at H / 50 = 12 mm, and at "
-        "H / 100 = 6 mm for the default, also with free-slip walls, and the quietest, also with "
+        "H / 100 = 6 mm for the default, also with free-slip walls, the Riemann solver with the "
+        "Wendland C2 kernel with walls damping along their normal, and the quietest, also with "
         "walls damping along their normal. RMS differences "
         f"over the experiment's record (t* {RECORD[0]}-{RECORD[1]}) of the sensor as read and "
         "of its running mean over 0.1 sqrt(H/g) (the load without the noise); the plateau "
