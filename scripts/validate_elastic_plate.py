@@ -5,8 +5,9 @@ Runs cases/elastic_plate.pbtxt through the launcher (three processes) in the
 configurations of RUNS (the case as it is; synchronised steps; multi-rate
 coupling at three resolutions; the total-Lagrangian solid; without the walls'
 friction; the study's interface rule), measures the RMS error of the plate's
-free-end displacement over the experimental points, and writes docs/figures/elastic_plate_tip.png,
-elastic_plate_level.png, elastic_plate_snapshots.png (like the study's Fig. 5,
+free-end displacement over the experimental points, and writes
+docs/figures/elastic_plate_tip.png, elastic_plate_level.png,
+elastic_plate_snapshots.png (like the study's Fig. 5,
 from the case as it is) and docs/results/elastic_plate.md. A run that stops
 early is scored over the experimental points it reached, and says so.
 

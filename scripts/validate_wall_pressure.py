@@ -290,8 +290,8 @@ def write_front(args):
     end_time = dam.AFTER_IMPACT[1] + 0.01
     rows = []
     for key, label, settings in OPTIONS:
-        # Every water with walls damping along their normal; the default and
-        # the quietest with free-slip walls too.
+        # Every water with walls damping along their normal; those of
+        # WALLS_OF with free-slip walls too.
         walls_of_water = [w for w in WALLS if key in WALLS_OF or w[0] != FREE_SLIP_SUFFIX]
         for spacing in (0.008, 0.004):
             for walls, suffix, friction in [("dissipation (the default)", "", [])] + [
