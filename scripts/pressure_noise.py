@@ -91,13 +91,6 @@ def far_wall_force_noise(series):
                              dam.RHO0_G_H * dam.H, *dam.AFTER_IMPACT)
 
 
-def front_error(series, experiment):
-    T, Z, _ = dam.dimensionless(series)
-    T_exp, Z_exp = experiment["T_t_sqrt_2g_over_a"], experiment["Z_z_over_a"]
-    window = T_exp <= dam.T_LAST
-    return cr.rms_relative_error(T, Z, T_exp[window], Z_exp[window])[0]
-
-
 def bench_ms_per_step(settings, spacing):
     """(ms per step of the fluid alone, one thread, the thread's CPU time;
     the pairs a step visits at the end)."""
@@ -184,7 +177,7 @@ def convergence(args, experiment):
         series = cr.read_csv(series_path)
         results[(key, dx)] = [f"{value:.3f}" for value in (
             *dam.sensor_noise(series, "probe1"), far_wall_force_noise(series)[0])] + [
-            f"{100 * front_error(series, experiment):.1f} %"]
+            f"{100 * dam.front_error(series, experiment)[0]:.1f} %"]
         print(key, dx, results[(key, dx)], flush=True)
     rows = [[labels[key][0], f"{dx * 1e3:g}", *results[(key, dx)]] for key, dx in runs]
     path = cr.write_table(
@@ -225,7 +218,7 @@ def main():
             rows[(key, dx)] = {"far_wall": dam.sensor_noise(series, "probe1"),
                                "force": far_wall_force_noise(series),
                                "floor": dam.sensor_noise(series, "probe0"),
-                               "front": front_error(series, experiment),
+                               "front": dam.front_error(series, experiment)[0],
                                "spray": cr.spray_removed(series),
                                "steps_per_s": steps_per_second(series)}
             print(key, dx, rows[(key, dx)], flush=True)

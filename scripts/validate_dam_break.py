@@ -42,6 +42,15 @@ def dimensionless(series):
     return T, series["front"] / COLUMN_WIDTH, series["height"] / COLUMN_WIDTH
 
 
+def front_error(series, experiment):
+    """(RMS, largest) relative error of the run's front against Martin & Moyce
+    (EXPERIMENT, martin_moyce_n2_front.csv) over T <= T_LAST."""
+    T, Z, _ = dimensionless(series)
+    T_exp, Z_exp = experiment["T_t_sqrt_2g_over_a"], experiment["Z_z_over_a"]
+    window = T_exp <= T_LAST
+    return cr.rms_relative_error(T, Z, T_exp[window], Z_exp[window])
+
+
 def sensor_noise(series, probe):
     """(mean, noise) of timeseries column probeK_pressure after the impact, in rho0 g H."""
     return cr.pressure_noise(series["t"], series[f"{probe}_pressure"], NOISE_WINDOW, RHO0_G_H,
@@ -91,7 +100,7 @@ def main():
         series = cr.read_csv(os.path.join(out, "timeseries.csv"))
         pressure_runs.append((f"dx = {dx * 1e3:g} mm", series))
         T, Z, H = dimensionless(series)
-        rms, worst = cr.rms_relative_error(T, Z, T_exp[window], Z_exp[window])
+        rms, worst = front_error(series, experiment)
         particles = int(series["water_particles"][0])
         far_wall, floor = sensor_noise(series, "probe1"), sensor_noise(series, "probe0")
         rows.append([f"{dx * 1e3:g}", particles, f"{100 * rms:.1f} %", f"{100 * worst:.1f} %",

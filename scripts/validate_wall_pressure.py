@@ -285,8 +285,6 @@ def write_front(args):
     against Martin & Moyce and its far-wall sensor's load and noise after the
     impact, as the dam break's own tables measure them (validate_dam_break.py)."""
     experiment = cr.reference("martin_moyce_n2_front.csv")
-    T_exp, Z_exp = experiment["T_t_sqrt_2g_over_a"], experiment["Z_z_over_a"]
-    window = T_exp <= dam.T_LAST
     end_time = dam.AFTER_IMPACT[1] + 0.01
     rows = []
     for key, label, settings in OPTIONS:
@@ -303,8 +301,7 @@ def write_front(args):
                     f"run.output_interval={dam.OUTPUT_INTERVAL}"],
                                 args.reuse and os.path.exists(os.path.join(out, "timeseries.csv")))
                 series = cr.read_csv(os.path.join(out, "timeseries.csv"))
-                T, Z, _ = dam.dimensionless(series)
-                rms, worst = cr.rms_relative_error(T, Z, T_exp[window], Z_exp[window])
+                rms, worst = dam.front_error(series, experiment)
                 mean, noise = dam.sensor_noise(series, "probe1")
                 cpu = sum(cr.logged_cpu_times(out).values()) / end_time
                 rows.append([label, walls, f"{1e3 * spacing:g}", f"{100 * rms:.1f} %",

@@ -127,14 +127,6 @@ void add_moving_wall(const sph::InterfaceParticles& F, const sph::InterfaceParti
   P_w.resize(S.size());
   for (std::size_t s = 0; s < S.size(); ++s)
     P_w[s] = sums[s].wall_pressure(accelerating ? Vec2(par.gravity - S.a[s]) : par.gravity);
-  std::vector<Vec2> n_s;
-  if (par.wall_friction == fluid::WallFriction::normal) {  // only that option reads it
-    n_s.resize(S.size());
-    for (std::size_t s = 0; s < S.size(); ++s) {
-      const double moment = sums[s].moment.norm();
-      n_s[s] = moment > 0.0 ? Vec2(-sums[s].moment / moment) : Vec2::Zero();
-    }
-  }
 
   for (const Pair& p : pairs) {
     const double rho_f = F.rho[p.f], V_s = S.m[p.s] / S.rho[p.s];
@@ -147,8 +139,10 @@ void add_moving_wall(const sph::InterfaceParticles& F, const sph::InterfaceParti
       else
         return sph::artificial_viscosity(x_fs, v, p.h_fs, F.c[p.f], rho, par.A, par.B);
     };
-    const Vec2 n = n_s.empty() ? Vec2(Vec2::Zero()) : n_s[p.s];
-    const double Pi_fs = fluid::wall_dissipation(Pi, par.wall_friction, p.x_fs, v_fs, n, rho_f);
+    // The normal only where it is read: the default's pairs take no square root for it.
+    const Vec2 n_s = par.wall_friction == fluid::WallFriction::normal ? sums[p.s].normal_to_water()
+                                                                      : Vec2(Vec2::Zero());
+    const double Pi_fs = fluid::wall_dissipation(Pi, par.wall_friction, p.x_fs, v_fs, n_s, rho_f);
     // The wall particle has the water's density and the solid particle's volume.
     const Vec2 a_f =
         sph::momentum_pair(V_s * rho_f, F.sigma[p.f], -P_w[p.s] * sph::Mat2::Identity(), rho_f,

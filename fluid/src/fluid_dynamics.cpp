@@ -164,10 +164,8 @@ void compute_wall_pressure(FluidParticles& P, const sph::CellGrid& grid,
     // the pow().
     P.rho[w] = P.p[w] == 0.0 ? eos.rho0() : eos.density(P.p[w]);
     P.tau[w] = Mat2::Zero();
-    if (par.wall_friction == WallFriction::normal) {  // only that option reads it
-      const double moment = sum.moment.norm();
-      P.wall_n[w] = moment > 0.0 ? Vec2(-sum.moment / moment) : Vec2::Zero();
-    }
+    if (par.wall_friction == WallFriction::normal)  // only that option reads it
+      P.wall_n[w] = sum.normal_to_water();
   });
 }
 

@@ -28,6 +28,14 @@ struct WallPressureSum {
   double wall_pressure(const Vec2& body_force) const {
     return weight > 0.0 ? (pressure + body_force.dot(moment)) / weight : 0.0;
   }
+
+  // The wall particle's unit normal towards the water in its reach, along
+  // -moment (the water's kernel-weighted side), with no geometry needed;
+  // zero with no water in reach (fluid.wall_friction "normal" reads it).
+  Vec2 normal_to_water() const {
+    const double length = moment.norm();
+    return length > 0.0 ? Vec2(-moment / length) : Vec2::Zero();
+  }
 };
 
 }  // namespace sph
