@@ -22,6 +22,18 @@ FIGURES = os.path.join(REPO, "docs", "figures")
 RESULTS = os.path.join(REPO, "docs", "results")
 
 
+def water(dissipation="delta_sph", kernel="cubic_spline", h_factor=1.3,
+          wall_friction="dissipation", shifting="none"):
+    """The --set settings of a water with every choice of its fluid block
+    spelled out (proto/case.proto, Fluid), so that a table's row names the
+    same water whatever the case or the code take by default. The keywords
+    default to delta-SPH with the cubic spline at h = 1.3 dx and the walls'
+    friction, the water the comparisons were first made against."""
+    return [f"fluid.dissipation={dissipation}", f"fluid.kernel={kernel}",
+            f"fluid.h_factor={h_factor:g}", f"fluid.wall_friction={wall_friction}",
+            f"fluid.shifting={shifting}"]
+
+
 def script_arguments(doc, out=None):
     """The scripts' common command line: the description (the first line of
     the script's docstring DOC), --reuse, and with OUT (a folder under out/)

@@ -40,11 +40,11 @@ import validate_dam_break as dam  # noqa: E402
 
 SPACING = 0.004
 RUNS = [  # (key, label, settings, kernel, h_factor)
-    ("default", "delta-SPH, cubic spline, h = 1.3 dx (the default)", [], "cubic_spline", 1.3),
-    ("riemann", "Riemann, cubic spline, h = 1.3 dx", ["fluid.dissipation=riemann"],
-     "cubic_spline", 1.3),
+    ("default", "delta-SPH, cubic spline, h = 1.3 dx (the default)", cr.water(), "cubic_spline",
+     1.3),
+    ("riemann", "Riemann, cubic spline, h = 1.3 dx", cr.water(**pn.RIEMANN), "cubic_spline", 1.3),
     ("riemann_wendland_2dx", "Riemann, Wendland C2, h = 2 dx",
-     ["fluid.dissipation=riemann"] + pn.WENDLAND_2DX, "wendland_c2", 2.0),
+     cr.water(**pn.RIEMANN, **pn.WENDLAND_2DX), "wendland_c2", 2.0),
 ]
 SNAPSHOT_INTERVAL = 0.005  # s: 40 snapshots over the window
 FAR_WALL_X = ss.PROBE[0]

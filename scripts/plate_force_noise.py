@@ -19,13 +19,13 @@ import cosph_results as cr
 import interface_acceleration as ia
 import pressure_noise as pn
 
-OPTIONS = [("delta_sph", "the case: delta-SPH, cubic spline, h = 1.3 dx", []),
-           ("riemann", "Riemann, cubic spline, h = 1.3 dx", ["fluid.dissipation=riemann"]),
-           ("wendland_2dx", "delta-SPH, Wendland C2, h = 2 dx", pn.WENDLAND_2DX),
+OPTIONS = [("delta_sph", "the case: delta-SPH, cubic spline, h = 1.3 dx", cr.water()),
+           ("riemann", "Riemann, cubic spline, h = 1.3 dx", cr.water(**pn.RIEMANN)),
+           ("wendland_2dx", "delta-SPH, Wendland C2, h = 2 dx", cr.water(**pn.WENDLAND_2DX)),
            ("riemann_wendland_2dx", "Riemann, Wendland C2, h = 2 dx",
-            ["fluid.dissipation=riemann"] + pn.WENDLAND_2DX),
+            cr.water(**pn.RIEMANN, **pn.WENDLAND_2DX)),
            ("riemann_wendland", "Riemann, Wendland C2, h = 1.5 dx",
-            ["fluid.dissipation=riemann"] + pn.WENDLAND)]
+            cr.water(**pn.RIEMANN, **pn.WENDLAND))]
 # The same waters without the walls' friction along the tank's walls and the
 # plate (fluid.wall_friction "normal", docs/physics.md, "Artificial viscosity").
 NORMAL_WALLS = ["fluid.wall_friction=normal"]

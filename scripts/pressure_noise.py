@@ -36,35 +36,35 @@ import numpy as np  # noqa: E402
 import cosph_results as cr  # noqa: E402
 import validate_dam_break as dam  # noqa: E402
 
-WENDLAND = ["fluid.kernel=wendland_c2", "fluid.h_factor=1.5"]
+# The Wendland C2 kernel with h = 1.5 dx: at the cubic spline's 1.3 its
+# lattice sum of x (x) grad W is 0.974 I, and a still tank reads 2.7 % over
+# hydrostatic pressure (docs/physics.md, "Kernel").
+WENDLAND = {"kernel": "wendland_c2", "h_factor": 1.5}
 # h = 2 dx: Colagrossi et al. 2013's rule for free-surface gravity flows, as the
 # wave flume uses (cases/wave_flume.pbtxt); the dam break's walls are >= 2h deep
 # for it at 8 mm and finer.
-WENDLAND_2DX = ["fluid.kernel=wendland_c2", "fluid.h_factor=2.0"]
-OPTIONS = [  # (key, label, settings)
-    ("delta_sph", "delta-SPH (Marrone et al. 2011), the default", []),
+WENDLAND_2DX = {"kernel": "wendland_c2", "h_factor": 2.0}
+RIEMANN = {"dissipation": "riemann"}
+SHIFTING = {"shifting": "delta_plus"}
+OPTIONS = [  # (key, label, settings): each water spelled out (cr.water)
+    ("delta_sph", "delta-SPH (Marrone et al. 2011), the default", cr.water()),
     ("fourtakas", "hydrostatic-free diffusion (Fourtakas et al. 2019)",
-     ["fluid.dissipation=fourtakas"]),
-    ("riemann", "Riemann solver with limiter (Zhang, Hu & Adams 2017)",
-     ["fluid.dissipation=riemann"]),
-    # The Wendland C2 kernel with h = 1.5 dx (WENDLAND_H): at the default 1.3
-    # its lattice sum of x (x) grad W is 0.974 I, and a still tank reads 2.7 %
-    # over hydrostatic pressure (docs/physics.md, "Kernel").
-    ("wendland", "delta-SPH, Wendland C2 kernel", WENDLAND),
+     cr.water(dissipation="fourtakas")),
+    ("riemann", "Riemann solver with limiter (Zhang, Hu & Adams 2017)", cr.water(**RIEMANN)),
+    ("wendland", "delta-SPH, Wendland C2 kernel", cr.water(**WENDLAND)),
     ("shifting", "delta-plus-SPH: delta-SPH and shifting (Sun et al. 2017)",
-     ["fluid.shifting=delta_plus"]),
-    ("riemann_wendland", "Riemann, Wendland C2 kernel", ["fluid.dissipation=riemann"] + WENDLAND),
-    ("riemann_shifting", "Riemann and delta-plus shifting",
-     ["fluid.dissipation=riemann", "fluid.shifting=delta_plus"]),
-    ("wendland_2dx", "delta-SPH, Wendland C2, h = 2 dx", WENDLAND_2DX),
+     cr.water(**SHIFTING)),
+    ("riemann_wendland", "Riemann, Wendland C2 kernel", cr.water(**RIEMANN, **WENDLAND)),
+    ("riemann_shifting", "Riemann and delta-plus shifting", cr.water(**RIEMANN, **SHIFTING)),
+    ("wendland_2dx", "delta-SPH, Wendland C2, h = 2 dx", cr.water(**WENDLAND_2DX)),
     ("riemann_wendland_2dx", "Riemann, Wendland C2, h = 2 dx",
-     ["fluid.dissipation=riemann"] + WENDLAND_2DX),
+     cr.water(**RIEMANN, **WENDLAND_2DX)),
 ]
 # Timed only: the Wendland C2 kernel at the cubic spline's h, the same
 # support and pairs, to tell the kernel's own cost from that of its larger h
 # (not an option: its still tank reads 2.7 % high, docs/physics.md, "Kernel").
 COST_ONLY = [("wendland_1.3dx", "Wendland C2 at h = 1.3 dx, the cubic spline's (timed only)",
-              ["fluid.kernel=wendland_c2"])]
+              cr.water(kernel="wendland_c2"))]
 SPACINGS = [0.008, 0.004]
 BENCH_STEPS = 400
 # The convergence check: (key of OPTIONS, spacings). The finest spacing for the
@@ -115,7 +115,7 @@ def costs(repeats, spacing):
             continue
         times, ratios = [], []
         for _ in range(repeats):
-            default.append(bench_ms_per_step([], spacing))
+            default.append(bench_ms_per_step(OPTIONS[0][2], spacing))
             times.append(bench_ms_per_step(settings, spacing))
             ratios.append(times[-1][0] / default[-1][0])
         result[key] = (float(np.median([ms for ms, _ in times])), float(np.median(ratios)),

@@ -53,24 +53,24 @@ def case_probe(index):
 
 
 def case_fluid_value(field):
-    """A number the case's fluid block sets (e.g. artificial_viscosity, h_factor)."""
+    """A number the case's fluid block sets (e.g. artificial_viscosity)."""
     return float(re.search(rf"^\s*{field}:\s*(\S+)", case_text(), re.MULTILINE).group(1))
 
 
 PROBE = case_probe(1)  # probe1, on the far wall
 ALPHA = case_fluid_value("artificial_viscosity")
-H_FACTOR = case_fluid_value("h_factor")
+H_FACTOR = 1.3  # the delta-SPH water's (cr.water), the comparison's reference
 RUNS = [  # (key, label, settings)
-    ("default", "delta-SPH, cubic spline, h = 1.3 dx (the default)", []),
-    ("wendland_2dx", "delta-SPH, Wendland C2, h = 2 dx", pn.WENDLAND_2DX),
+    ("default", "delta-SPH, cubic spline, h = 1.3 dx (the default)", cr.water()),
+    ("wendland_2dx", "delta-SPH, Wendland C2, h = 2 dx", cr.water(**pn.WENDLAND_2DX)),
     ("riemann_wendland_2dx", "Riemann, Wendland C2, h = 2 dx",
-     ["fluid.dissipation=riemann"] + pn.WENDLAND_2DX),
+     cr.water(**pn.RIEMANN, **pn.WENDLAND_2DX)),
     # A diagnosis, not an option: the artificial viscosity's alpha h c0, which
     # also acts between water and the walls (their no-slip, docs/physics.md),
     # held at the default's by alpha = 0.02 x 1.3 / 2.
     ("wendland_2dx_same_alpha_h", "delta-SPH, Wendland C2, h = 2 dx, alpha = "
      f"{ALPHA * H_FACTOR / 2:g} (alpha h as the default's; a diagnosis)",
-     pn.WENDLAND_2DX + [f"fluid.artificial_viscosity={ALPHA * H_FACTOR / 2:g}"]),
+     cr.water(**pn.WENDLAND_2DX) + [f"fluid.artificial_viscosity={ALPHA * H_FACTOR / 2:g}"]),
 ]
 SUPPORTS = [  # (label, kernel, h): the sensor's, as in the runs
     ("cubic spline, h = 1.3 dx (the default)", "cubic_spline", H_FACTOR * SPACING),
