@@ -9,6 +9,7 @@ import json
 import os
 import re
 import resource
+import shutil
 import subprocess
 import sys
 import time
@@ -86,6 +87,10 @@ def run_case(case, out_dir, settings=(), timeout=3600):
     """Runs a case with the launcher; returns the wall time in seconds."""
     command = [os.path.join(REPO, "coupler", "cosph"), "run", case, "--out", out_dir, "--quiet",
                "--overwrite"]  # the script's own folder: its earlier run there goes
+    # Gone before the launcher starts, too: a case it refuses leaves the folder
+    # as it was, and the earlier run's results would be read as this one's.
+    shutil.rmtree(out_dir, ignore_errors=True)
+    os.makedirs(out_dir)
     for setting in settings:
         command += ["--set", setting]
     start = time.monotonic()

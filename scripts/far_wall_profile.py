@@ -40,7 +40,7 @@ import validate_dam_break as dam  # noqa: E402
 
 SPACING = 0.004
 RUNS = [  # (key, label, settings, kernel, h_factor)
-    ("default", "delta-SPH, cubic spline, h = 1.3 dx (the default)", cr.water(), "cubic_spline",
+    ("default", "delta-SPH, cubic spline, h = 1.3 dx (the earlier default)", cr.water(), "cubic_spline",
      1.3),
     ("riemann", "Riemann, cubic spline, h = 1.3 dx", cr.water(**pn.RIEMANN), "cubic_spline", 1.3),
     ("riemann_wendland_2dx", "Riemann, Wendland C2, h = 2 dx",

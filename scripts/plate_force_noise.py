@@ -3,8 +3,9 @@
 fluid options of pressure_noise.py (issue 38, item 4), and for three of them
 also without the walls' friction.
 
-Runs cases/elastic_plate.pbtxt as it is and with each option below set on its
-water, and measures as scripts/interface_acceleration.py does: the force on
+Runs cases/elastic_plate.pbtxt with each water below (the case's own, the
+default water, is Riemann + Wendland C2 at h = 1.5 dx with walls damping along
+their normal), and measures as scripts/interface_acceleration.py does: the force on
 the plate (coupling.csv force_on_solid_x, the same number as timeseries.csv's
 plate_force_x), its mean and its noise (RMS about its running mean over
 0.1 sqrt(H/g), H = 0.14 m, over 0.02-0.4 s), both over rho g H^2 / 2, and the
@@ -19,7 +20,8 @@ import cosph_results as cr
 import interface_acceleration as ia
 import pressure_noise as pn
 
-OPTIONS = [("delta_sph", "the case: delta-SPH, cubic spline, h = 1.3 dx", cr.water()),
+OPTIONS = [("delta_sph", "delta-SPH, cubic spline, h = 1.3 dx (the earlier default)",
+            cr.water()),
            ("riemann", "Riemann, cubic spline, h = 1.3 dx", cr.water(**pn.RIEMANN)),
            ("wendland_2dx", "delta-SPH, Wendland C2, h = 2 dx", cr.water(**pn.WENDLAND_2DX)),
            ("riemann_wendland_2dx", "Riemann, Wendland C2, h = 2 dx",
@@ -29,7 +31,8 @@ OPTIONS = [("delta_sph", "the case: delta-SPH, cubic spline, h = 1.3 dx", cr.wat
 # The same waters without the walls' friction along the tank's walls and the
 # plate (fluid.wall_friction "normal", docs/physics.md, "Artificial viscosity").
 NORMAL_WALLS = ["fluid.wall_friction=normal"]
-OPTIONS += [(key + "_normal", label + ", walls and plate damping along their normal only",
+OPTIONS += [(key + "_normal", label + ", walls and plate damping along their normal only"
+             + (" (the default water: the case)" if key == "riemann_wendland" else ""),
              settings + NORMAL_WALLS) for key, label, settings in OPTIONS
             if key in ("delta_sph", "riemann_wendland", "riemann_wendland_2dx")]
 

@@ -3,7 +3,7 @@
 
 For each option of fluid.dissipation, fluid.kernel and fluid.shifting (and the
 combinations in OPTIONS), the dam break (cases/dam_break.pbtxt, to its end
-time) at 8 mm, at 4 mm too for the options quieter at 8 mm than the default
+time) at 8 mm, at 4 mm too for the options quieter at 8 mm than delta-SPH
 (the cheap run sorts the candidates), and the still tank (the tank filled to
 H, 8 mm):
   - the far-wall sensor's (probe1) mean and noise after the impact, and the
@@ -17,8 +17,9 @@ Writes docs/results/pressure_noise.md and docs/figures/pressure_noise.png.
 
 With --convergence instead: the far-wall sensor's mean and noise, the far
 wall's force and the front's error for the quiet options at 4, 2 and (the
-default and the quietest option) 1.5 mm, the runs ending just after the
-window: whether the default's mean, the issue's reference, is converged.
+earlier default, delta-SPH, and the quietest option) 1.5 mm, the runs
+ending just after the window: whether delta-SPH's mean, the issue's
+reference, is converged.
 Writes docs/results/sensor_convergence.md.
 
 usage: /usr/bin/python3 scripts/pressure_noise.py [--out DIR] [--reuse] [--repeats N]
@@ -47,7 +48,7 @@ WENDLAND_2DX = {"kernel": "wendland_c2", "h_factor": 2.0}
 RIEMANN = {"dissipation": "riemann"}
 SHIFTING = {"shifting": "delta_plus"}
 OPTIONS = [  # (key, label, settings): each water spelled out (cr.water)
-    ("delta_sph", "delta-SPH (Marrone et al. 2011), the default", cr.water()),
+    ("delta_sph", "delta-SPH (Marrone et al. 2011), the earlier default", cr.water()),
     ("fourtakas", "hydrostatic-free diffusion (Fourtakas et al. 2019)",
      cr.water(dissipation="fourtakas")),
     ("riemann", "Riemann solver with limiter (Zhang, Hu & Adams 2017)", cr.water(**RIEMANN)),
@@ -68,7 +69,7 @@ COST_ONLY = [("wendland_1.3dx", "Wendland C2 at h = 1.3 dx, the cubic spline's (
 SPACINGS = [0.008, 0.004]
 BENCH_STEPS = 400
 # The convergence check: (key of OPTIONS, spacings). The finest spacing for the
-# default and the quietest option only: a 1.5 mm run takes ~20 min of the
+# earlier default and the quietest option only: a 1.5 mm run takes ~20 min of the
 # shared machine.
 CONVERGENCE = [("delta_sph", [0.004, 0.002, 0.0015]), ("riemann", [0.004, 0.002]),
                ("riemann_wendland", [0.004, 0.002]), ("wendland_2dx", [0.004, 0.002]),
@@ -104,9 +105,9 @@ def bench_ms_per_step(settings, spacing):
 
 
 def costs(repeats, spacing):
-    """{key: (median ms per step, median of its ratios to the default's, lowest
+    """{key: (median ms per step, median of its ratios to delta-SPH's, lowest
     ratio, highest, pairs a step visits)}: each option timed in REPEATS pairs
-    with the default, the two alternating, so that the shared machine's load
+    with delta-SPH (the earlier default), the two alternating, so that the shared machine's load
     falls on both alike."""
     default = []
     result = {}
@@ -147,7 +148,7 @@ def draw(rows, cost, path):
             ax.axhline(0.05, color="0.5", ls="--", lw=0.8, label="target: 0.05 rho0 g H")
         ax.axvline(1.3, color="0.5", ls=":", lw=0.8, label="at most 30 % slower per step")
         ax.set_yscale("log")
-        ax.set(xlabel=f"cost per step / the default's (fluid alone, {SPACINGS[-1] * 1e3:g} mm, "
+        ax.set(xlabel=f"cost per step / delta-SPH's (fluid alone, {SPACINGS[-1] * 1e3:g} mm, "
                       "one thread)", ylabel=ylabel)
     axes[0].set_title("Dam break after the impact: the sensor 16 mm up the far wall", fontsize=9)
     axes[1].set_title("... and the whole far wall's load", fontsize=9)
@@ -159,8 +160,8 @@ def draw(rows, cost, path):
 
 def convergence(args, experiment):
     """The sensor's and the wall force's means against the spacing for the
-    quiet options: whether the default's mean at 4 mm, the issue's
-    reference, is converged, and where the options' means go."""
+    quiet options: whether delta-SPH's mean at 4 mm (the earlier default's,
+    the issue's reference) is converged, and where the options' means go."""
     labels = {key: (label, settings) for key, label, settings in OPTIONS}
     end = dam.AFTER_IMPACT[1] + 0.01
     runs = [(key, dx) for key, spacings in CONVERGENCE for dx in spacings]
@@ -196,7 +197,7 @@ def convergence(args, experiment):
 def main():
     parser = cr.script_arguments(__doc__, "pressure_noise")
     parser.add_argument("--repeats", type=int, default=5,
-                        help="pairs (option, default) of the cost measurement per option")
+                        help="pairs (option, delta-SPH) of the cost measurement per option")
     parser.add_argument("--convergence", action="store_true",
                         help="only the convergence check of the sensor's mean (CONVERGENCE)")
     args = parser.parse_args()
@@ -211,7 +212,7 @@ def main():
             coarse = rows.get((key, SPACINGS[0]))
             if dx != SPACINGS[0] and key != "delta_sph" and not (
                     coarse["far_wall"][1] < rows[("delta_sph", SPACINGS[0])]["far_wall"][1]):
-                continue  # not quieter than the default at 8 mm: not a candidate
+                continue  # not quieter than delta-SPH at 8 mm: not a candidate
             os.makedirs(os.path.join(args.out, f"{key}_dx_{dx:g}"), exist_ok=True)
             series = run(os.path.join(args.out, f"{key}_dx_{dx:g}"),
                          settings + [f"fluid.spacing={dx}"], args.reuse)
@@ -227,7 +228,7 @@ def main():
                      args.reuse)
         rows[(key, "still")] = {"floor": dam.sensor_noise(series, "probe0")}
     cost = costs(args.repeats, SPACINGS[-1])
-    print("ms per step, its ratio to the default's (median, lowest, highest):", cost, flush=True)
+    print("ms per step, its ratio to delta-SPH's (median, lowest, highest):", cost, flush=True)
 
     def per_step(key):
         ms, ratio, lowest, highest, _ = cost[key]
@@ -250,7 +251,7 @@ def main():
         for dx in SPACINGS:
             finest = dx == SPACINGS[-1]
             if (key, dx) not in rows:
-                table.append([label, f"{dx * 1e3:g}", "not run: no quieter than the default at "
+                table.append([label, f"{dx * 1e3:g}", "not run: no quieter than delta-SPH at "
                               f"{SPACINGS[0] * 1e3:g} mm", "", "", "", "", "", "", "",
                               per_step(key) if finest else "", pairs(key) if finest else "",
                               ""])
@@ -275,23 +276,29 @@ def main():
         ["option", "spacing (mm)", "far-wall sensor: mean", "noise", "far-wall force: mean",
          "noise", "floor sensor: mean", "noise",
          "front: RMS rel. error", "water left as spray",
-         f"ms per step at {SPACINGS[-1] * 1e3:g} mm (/ default: median; range)",
-         "pairs a step visits (/ default)",
-         "CPU s per simulated s (/ default)"],
+         f"ms per step at {SPACINGS[-1] * 1e3:g} mm (/ delta-SPH: median; range)",
+         "pairs a step visits (/ delta-SPH)",
+         "CPU s per simulated s (/ delta-SPH)"],
         table,
         preamble="The dam break's pressure sensors after the impact (t = "
                  f"{dam.AFTER_IMPACT[0]:g}-{dam.AFTER_IMPACT[1]:g} s) for each option of "
                  "`fluid.dissipation`, `fluid.kernel` and `fluid.shifting`: mean, and noise as the RMS about the running mean over "
                  f"0.1 sqrt(H/g) = {1e3 * dam.NOISE_WINDOW:.0f} ms, both over rho0 g H "
                  "(H = 0.288 m), and the far wall's horizontal force likewise over "
-                 "rho0 g H^2, at 4 mm for the options quieter at 8 mm than the default; "
+                 "rho0 g H^2, at 4 mm for the options quieter at 8 mm than delta-SPH, the "
+                 "earlier default; "
                  "the front's RMS relative error against Martin & Moyce "
                  "(T <= 3.1); the fluid's cost per step alone (`cosph-bench --cpu`, one thread, "
-                 f"{BENCH_STEPS} steps; each option in {args.repeats} pairs with the default, "
+                 f"{BENCH_STEPS} steps; each option in {args.repeats} pairs with delta-SPH, "
                  "the two alternating on the shared machine: median ms, and the median, lowest "
                  "and highest of the pairs' ratios; the neighbour pairs a step visits, which the "
                  "cost follows), and per simulated second (the cost per step "
                  "times the steps the 4 mm run took: a larger h takes longer steps). "
+                 "Every water here meets the walls with their friction (`fluid.wall_friction` "
+                 "\"dissipation\"), the earlier default; the default water, Riemann with the "
+                 "Wendland C2 kernel at h = 1.5 dx and walls damping along their normal only, "
+                 "is that row's water with the walls of docs/results/wall_friction_front.md "
+                 "(docs/physics.md, \"Choice of water\"). "
                  "Produced by `scripts/pressure_noise.py`.")
     print(open(path).read())
     print("wrote", figure)

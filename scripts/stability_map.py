@@ -8,8 +8,9 @@ with an error is a result, not a failure of this script):
      (multi-rate, so the sweep stays affordable);
   2. the coupled plate with the solid stepped whole at the fluid's step
      (coupling.solid_step = fluid), which must stop with an error;
-  3. delta-SPH density diffusion off and on: pressure noise in a still tank
-     and in the dam break, over the particles and at the case's floor sensor;
+  3. delta-SPH density diffusion off and on, and the default water (Riemann):
+     pressure noise in a still tank and in the dam break, over the particles
+     and at the case's floor sensor;
   4. the solid-to-fluid density ratio of the coupled plate, down from 1.1,
      multi-rate, then with the case's default, the coupler's automatic choice
      (docs/auto_substeps.md), and the first ratio that breaks multi-rate again
@@ -189,11 +190,17 @@ def diffusion_rows(out_root):
                ["fluid.water[0].max.x=0.576"], 1.0),
               ("dam break (8 mm), t = 0.3 s", [], 0.3)]
     for scene, settings, end in scenes:
-        for label, delta in (("off", "-1"), ("on (0.1)", "0.1")):
-            out = os.path.join(out_root, f"delta_{delta}_{len(settings)}")
+        # delta-SPH (the earlier default water) with its diffusion off and on,
+        # and the default water, whose Riemann solver damps in its stead.
+        for label, name, water in (
+                ("delta-SPH, diffusion off", "delta_-1", cr.water() + ["fluid.density_diffusion=-1"]),
+                ("delta-SPH, diffusion on (0.1)", "delta_0.1",
+                 cr.water() + ["fluid.density_diffusion=0.1"]),
+                ("the default water (Riemann, Wendland C2)", "default_water", [])):
+            out = os.path.join(out_root, f"{name}_{len(settings)}")
             reached, _, error, wall = launch(
-                "dam_break", out, settings + [f"fluid.density_diffusion={delta}",
-                                              f"run.output_interval={PROBE_OUTPUT_INTERVAL}"], end)
+                "dam_break", out, settings + water + [
+                    f"run.output_interval={PROBE_OUTPUT_INTERVAL}"], end)
             last = sorted(glob.glob(os.path.join(out, "fluid_[0-9]*.h5")))[-1]
             noise = pressure_noise(last)
             rows.append([scene, label, f"{100 * noise:.2f} %", f"{100 * probe_noise(out):.2f} %",
@@ -349,13 +356,13 @@ def main():
         "",
         table(["scene", "run.cfl", "median dt (s)", "outcome", "wall (s)"], cfl_rows),
         "",
-        "**Density diffusion.** Pressure noise: RMS over water particles of P minus the mean "
+        "**Density diffusion, and the default water.** Pressure noise: RMS over water particles of P minus the mean "
         "P of the neighbours within 2.6 dx, over rho0 g H (H = 0.288 m), at the run's end. At the "
         "floor sensor under the column (the case's probe0, sampled every "
         f"{1e3 * PROBE_OUTPUT_INTERVAL:g} ms over the whole run): RMS of its pressure minus its "
         f"running mean over {1e3 * PROBE_WINDOW:g} ms, over rho0 g H.",
         "",
-        table(["scene", "delta-SPH", "pressure noise (particles)", "pressure noise (floor sensor)",
+        table(["scene", "water", "pressure noise (particles)", "pressure noise (floor sensor)",
                "outcome"], diffusion_rows(args.out)),
         "",
         "**Solid-to-fluid density ratio** of the coupled plate (to t = 0.1 s); the "

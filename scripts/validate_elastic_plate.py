@@ -3,8 +3,8 @@
 
 Runs cases/elastic_plate.pbtxt through the launcher (three processes) in the
 configurations of RUNS (the case as it is; synchronised steps; multi-rate
-coupling at three resolutions; the total-Lagrangian solid; without the walls'
-friction; the study's interface rule), measures the RMS error of the plate's
+coupling at three resolutions; the total-Lagrangian solid; with the walls'
+friction and without; the earlier default water; the study's interface rule), measures the RMS error of the plate's
 free-end displacement over the experimental points, and writes
 docs/figures/elastic_plate_tip.png, elastic_plate_level.png,
 elastic_plate_snapshots.png (like the study's Fig. 5,
@@ -42,12 +42,16 @@ RUNS = [("the case (sub-steps chosen automatically)", "auto", []),
         # buys, as an option on the chart: the defaults stay as they are.
         ("multi-rate, run.cfl 0.3", "multirate_cfl03", MULTIRATE + ["run.cfl=0.3"]),
         # The walls' numerical friction (docs/physics.md, "Artificial viscosity")
-        # left out against the tank and the plate alike: the case otherwise as it is.
+        # on the tank and the plate alike, and none: the case otherwise as it is.
         # The chart names a point by its label's last part.
-        ("walls and plate damping along their normal only, fluid.wall_friction normal",
-         "friction_normal", ["fluid.wall_friction=normal"]),
+        ("walls and plate with the walls' friction, fluid.wall_friction dissipation",
+         "friction_dissipation", ["fluid.wall_friction=dissipation"]),
         ("free-slip walls and plate, fluid.wall_friction none", "friction_none",
          ["fluid.wall_friction=none"]),
+        # The default water before the Riemann solver's (docs/physics.md,
+        # "Choice of water"), the case otherwise as it is.
+        ("delta-SPH with the cubic spline and the walls' friction, the earlier default water",
+         "earlier_water", cr.water()),
         ("study's interface rule (stress_sum)", "stress_sum",
          SYNCHRONISED + ["coupling.interface=stress_sum"])]
 
@@ -60,6 +64,8 @@ def series_of(settings):
     if "coupling.interface=stress_sum" in settings:
         series += ", study's interface rule"
     series += "".join(f", run.cfl {s.split('=')[1]}" for s in settings if s.startswith("run.cfl="))
+    if settings == cr.water():
+        return series + ", the earlier default water"
     series += "".join(f", wall friction {s.split('=')[1]}" for s in settings
                       if s.startswith("fluid.wall_friction="))
     return series

@@ -5,8 +5,9 @@ Runs cases/dam_break_wall_pressure.pbtxt (H = 0.6 m, sensor P1 on the far
 wall 0.16 m up; validation/reference/buchner2002_wall_pressure_p1.csv) for
 each option of the water's dissipation, kernel and shifting that
 pressure_noise.py compares (its OPTIONS), at H / 50 = 12 mm, and at
-H / 100 = 6 mm for the default, the Riemann solver with the Wendland C2 kernel
-with walls damping along their normal, and the option quietest on the
+H / 100 = 6 mm for delta-SPH (the earlier default), the Riemann solver with the
+Wendland C2 kernel with walls damping along their normal (the default water,
+DEFAULT_WATER), and the option quietest on the
 plateau at 12 mm. For each run, in t* = t sqrt(g/H)
 and p / (rho g H):
   - the RMS difference from the experiment over its whole record
@@ -56,14 +57,16 @@ RECORD = (2.0, 7.3)           # t*: the experiment's record
 PLATEAU = (3.3, 5.2)          # t*: between the impact and the jet's return
 RISE = 0.2                    # p / (rho g H)
 COARSE, FINE = 0.012, 0.006   # m: H / 50, H / 100
-# The default, the Riemann solver with the Wendland C2 kernel (the cheapest
-# option quieter than the default with either walls) and the quietest option
+# delta-SPH (the earlier default), the Riemann solver with the Wendland C2
+# kernel (the cheapest option quieter than delta-SPH with either walls; with
+# walls damping along their normal, the default water) and the quietest option
 # on the plateau (WALLS_OF) again with the other walls of fluid.wall_friction:
 # (key suffix, label suffix, settings).
 WALLS = [("_free_slip", ", free-slip walls", ["fluid.wall_friction=none"]),
          ("_normal", ", walls damping along their normal only", ["fluid.wall_friction=normal"])]
 FREE_SLIP_SUFFIX = WALLS[0][0]
 WALLS_OF = ("delta_sph", "riemann_wendland", "riemann_wendland_2dx")
+DEFAULT_WATER = "riemann_wendland_normal"  # docs/physics.md, "Choice of water"
 # De Courcy et al. 2024's sensors: (timeseries column, height in mm, file).
 REFERENCE_2D = [(f"probe{k}_pressure", mm, f"decourcy2024_wall_pressure_y{mm:03d}mm.csv")
                 for k, mm in ((1, 6), (2, 30), (3, 60), (0, 160))]
@@ -186,7 +189,8 @@ def main():
             results[(spacing, key)] = measured
             if measured is None:
                 print(f"{key} at {spacing}: {failure or 'did not reach the record end'}")
-    labels = {key: label for key, label, _ in options}
+    labels = {key: label + (" (the default water)" if key == DEFAULT_WATER else "")
+              for key, label, _ in options}
     rows = []
     for (spacing, key), r in results.items():
         if r is None:
@@ -209,12 +213,13 @@ def main():
         "5.366 H away), the pressure sensor P1 on the far wall 0.16 m up, against the "
         "experiment (validation/reference/buchner2002_wall_pressure_p1.csv), in "
         "t* = t sqrt(g/H) and p / (rho g H), for the water's options of "
-        "`scripts/pressure_noise.py`, and the default, the Riemann solver with the Wendland C2 "
-        "kernel and the option quietest on the plateau "
+        "`scripts/pressure_noise.py`, and delta-SPH (the earlier default), the Riemann solver "
+        "with the Wendland C2 kernel and the option quietest on the plateau "
         "with the other walls of `fluid.wall_friction` (\"none\": free-slip; \"normal\": "
         "damping along their normal only), at H / 50 = 12 mm, and at "
-        "H / 100 = 6 mm for the default, also with free-slip walls, the Riemann solver with the "
-        "Wendland C2 kernel with walls damping along their normal, and the quietest, also with "
+        "H / 100 = 6 mm for delta-SPH, also with free-slip walls, the Riemann solver with the "
+        "Wendland C2 kernel with walls damping along their normal (the default water), and the "
+        "quietest, also with "
         "walls damping along their normal. RMS differences "
         f"over the experiment's record (t* {RECORD[0]}-{RECORD[1]}) of the sensor as read and "
         "of its running mean over 0.1 sqrt(H/g) (the load without the noise); the plateau "
@@ -250,7 +255,7 @@ def write_against_reference_2d(results, labels):
                f"impact at 6 mm: t* where the load passes {IMPACT}"])
     preamble = (
         "Written by `scripts/validate_wall_pressure.py`. The runs of the table above (and the "
-        "default, the Riemann solver with the Wendland C2 kernel and the quietest option with "
+        "delta-SPH, the Riemann solver with the Wendland C2 kernel and the quietest option with "
         "the other walls of `fluid.wall_friction`: "
         "\"none\", free-slip, and \"normal\", damping along their normal only) "
         "against a converged two-dimensional solution of the same flow: De Courcy et al. 2024 "
@@ -292,7 +297,7 @@ def write_front(args):
         # WALLS_OF with free-slip walls too.
         walls_of_water = [w for w in WALLS if key in WALLS_OF or w[0] != FREE_SLIP_SUFFIX]
         for spacing in (0.008, 0.004):
-            for walls, suffix, friction in [("dissipation (the default)", "", [])] + [
+            for walls, suffix, friction in [("dissipation", "", [])] + [
                     (setting[0].split("=")[1], suffix, setting)
                     for suffix, _, setting in walls_of_water]:
                 out = os.path.join(args.out, "dam_break", f"{key}{suffix}_{1e3 * spacing:g}mm")
@@ -304,14 +309,16 @@ def write_front(args):
                 rms, worst = dam.front_error(series, experiment)
                 mean, noise = dam.sensor_noise(series, "probe1")
                 cpu = sum(cr.logged_cpu_times(out).values()) / end_time
-                rows.append([label, walls, f"{1e3 * spacing:g}", f"{100 * rms:.1f} %",
+                rows.append([label + (" (the default water)" if key + suffix == DEFAULT_WATER
+                                      else ""), walls, f"{1e3 * spacing:g}", f"{100 * rms:.1f} %",
                              f"{100 * worst:.1f} %", f"{mean:.3f}", f"{noise:.3f}", f"{cpu:.1f}"])
     preamble = (
         "Written by `scripts/validate_wall_pressure.py`. The dam break (`cases/dam_break.pbtxt`) "
         "with each water of `scripts/pressure_noise.py` with the walls' friction and with walls "
-        "damping along their normal only (`fluid.wall_friction` \"normal\"), and the default "
-        "water, the Riemann solver with the Wendland C2 kernel and the quietest option also "
-        "with free-slip walls (\"none\"): the front against Martin & Moyce 1952 over T = t sqrt(2g/a) <= "
+        "damping along their normal only (`fluid.wall_friction` \"normal\"), and delta-SPH, the "
+        "Riemann solver with the Wendland C2 kernel and the quietest option also with free-slip "
+        "walls (\"none\"); the default water is the Riemann solver with the Wendland C2 kernel "
+        "(h = 1.5 dx) and walls damping along their normal: the front against Martin & Moyce 1952 over T = t sqrt(2g/a) <= "
         f"{dam.T_LAST}, and the far-wall sensor after the impact (t = {dam.AFTER_IMPACT[0]}-"
         f"{dam.AFTER_IMPACT[1]} s), its mean and noise over rho0 g H, as the dam break's own "
         "tables measure them; and the run's CPU time (all threads) per simulated second, whose "

@@ -109,8 +109,9 @@ void add_stress_sum(const sph::InterfaceParticles& F, const sph::InterfacePartic
 }
 
 // Compiled once with the water's Riemann terms and once without, as the
-// fluid's continuity pass is (with_dissipation): the default's pair loop holds
-// only its own terms, and its results do not move with the Riemann option's.
+// fluid's continuity pass is (with_dissipation): the other waters' pair loop
+// holds only its own terms, and its results do not move with the Riemann
+// water's.
 template <bool kRiemann>
 void add_moving_wall(const sph::InterfaceParticles& F, const sph::InterfaceParticles& S,
                      const std::vector<Pair>& pairs, const CrossPhaseParameters& par,

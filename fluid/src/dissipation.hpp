@@ -1,11 +1,12 @@
 // Which dissipation the water's sound waves and pressure noise meet
 // (fluid.dissipation, proto/case.proto):
 //   delta_sph  density diffusion with renormalised gradients (density_diffusion.hpp)
-//              and Monaghan's artificial viscosity: the default;
+//              and Monaghan's artificial viscosity;
 //   fourtakas  density diffusion with the hydrostatic part removed
 //              (hydrostatic_density_diffusion.hpp) and Monaghan's viscosity;
 //   riemann    Riemann-solver SPH with the dissipation limiter in both
-//              equations (sphcore/riemann_dissipation.hpp), no artificial viscosity.
+//              equations (sphcore/riemann_dissipation.hpp), no artificial viscosity:
+//              the default (docs/physics.md, "Choice of water").
 #pragma once
 
 #include <type_traits>

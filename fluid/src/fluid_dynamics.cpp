@@ -45,8 +45,8 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
   sph::parallel_pass(n, threaded, [&](long i) { P.volume[i] = P.m[i] / P.rho[i]; });
 
   // The dissipation is chosen once for the whole pass, at compile time, so
-  // that the pair loop holds only its terms: with a run-time branch there the
-  // default's pass paid for the Riemann wall term it never takes.
+  // that the pair loop holds only its terms: with a run-time branch there
+  // delta-SPH's pass paid for the Riemann wall term it never takes.
   with_dissipation(par.dissipation, [&](auto dissipation) {
     sph::parallel_pass(n, threaded, [&](long i) {
       if (!P.is_water(i)) return;
@@ -216,7 +216,7 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
         const auto bracket_times_gradient_of = [&](int j, double F_ij) {
           const Vec2 x_ij = x_i - x[j], v_ij = v_i - v[j];
           const double rho_ij = 0.5 * (rho_i + rho[j]);
-          // The default's test first: it spares the pair loop a load of kind[j].
+          // The walls' friction's test first: it spares that pair loop a load of kind[j].
           const double Pi_ij =
               wall_friction == WallFriction::dissipation || kind[j] == Kind::water
                   ? Pi(x_ij, v_ij, rho_ij)

@@ -16,9 +16,9 @@ Dissipation read_dissipation(const sph::CaseFile& case_file) {
   require(name.empty() || name == "delta_sph" || name == "fourtakas" || name == "riemann",
           case_file, "fluid.dissipation",
           "unknown dissipation '" + name + "' (known: delta_sph, fourtakas, riemann)");
-  return name == "riemann"     ? Dissipation::riemann
+  return name == "delta_sph"   ? Dissipation::delta_sph
          : name == "fourtakas" ? Dissipation::fourtakas
-                               : Dissipation::delta_sph;
+                               : Dissipation::riemann;
 }
 
 WallFriction read_wall_friction(const sph::CaseFile& case_file) {
@@ -26,16 +26,32 @@ WallFriction read_wall_friction(const sph::CaseFile& case_file) {
   require(name.empty() || name == "dissipation" || name == "none" || name == "normal", case_file,
           "fluid.wall_friction",
           "unknown wall friction '" + name + "' (known: dissipation, none, normal)");
-  return name == "none"     ? WallFriction::none
-         : name == "normal" ? WallFriction::normal
-                            : WallFriction::dissipation;
+  return name == "none"          ? WallFriction::none
+         : name == "dissipation" ? WallFriction::dissipation
+                                 : WallFriction::normal;
 }
 
 sph::kernel::Shape read_kernel_shape(const sph::CaseFile& case_file) {
   const std::string& name = case_file.config.fluid().kernel();
   require(name.empty() || name == "cubic_spline" || name == "wendland_c2", case_file,
           "fluid.kernel", "unknown kernel '" + name + "' (known: cubic_spline, wendland_c2)");
-  return name == "wendland_c2" ? sph::kernel::Shape::wendland_c2 : sph::kernel::Shape::cubic_spline;
+  return name == "cubic_spline" ? sph::kernel::Shape::cubic_spline
+                                : sph::kernel::Shape::wendland_c2;
+}
+
+double default_h_factor(sph::kernel::Shape kernel) {
+  return kernel == sph::kernel::Shape::wendland_c2 ? 1.5 : 1.3;
+}
+
+std::string kernel_resolution_warning(const FluidParameters& p) {
+  const double wendland_h_factor = default_h_factor(sph::kernel::Shape::wendland_c2);
+  if (p.kernel != sph::kernel::Shape::wendland_c2 || p.h >= (wendland_h_factor - 1e-9) * p.dx)
+    return "";
+  return "fluid.h_factor " + format_number(p.h / p.dx) + " with the Wendland C2 kernel: below " +
+         format_number(wendland_h_factor) +
+         " its lattice sums hold still water over hydrostatic pressure (2.7 % at 1.3); leave "
+         "h_factor unset for the kernel's own " +
+         format_number(wendland_h_factor) + " (docs/physics.md, \"Kernel\")";
 }
 
 FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
@@ -44,8 +60,10 @@ FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
   FluidParameters p;
   p.run = sph::read_run_parameters(case_file);
 
+  p.kernel = read_kernel_shape(case_file);
   const sph::Resolution resolution =
-      sph::read_resolution(case_file, "fluid", fluid.spacing(), fluid.h_factor());
+      sph::read_resolution(case_file, "fluid", fluid.spacing(),
+                           fluid.h_factor() > 0.0 ? fluid.h_factor() : default_h_factor(p.kernel));
   p.dx = resolution.dx;
   p.h = resolution.h;
   p.rho0 = sph::read_density(case_file, "fluid", fluid.density());
@@ -60,7 +78,6 @@ FluidParameters read_fluid_parameters(const sph::CaseFile& case_file) {
             : fluid.density_diffusion() > 0.0 ? fluid.density_diffusion()
                                               : 0.1;
   p.dissipation = read_dissipation(case_file);
-  p.kernel = read_kernel_shape(case_file);
   require(
       fluid.shifting().empty() || fluid.shifting() == "none" || fluid.shifting() == "delta_plus",
       case_file, "fluid.shifting",

@@ -2,6 +2,7 @@
 // their rules: docs/physics.md).
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "dissipation.hpp"
@@ -29,13 +30,24 @@ struct FluidParameters {
   std::vector<double> level_probes;      // x of each water-level gauge
   std::vector<WallMotion> wall_motions;  // of fluid.moving_walls, in order
 
-  // Of the water's sound waves and pressure noise.
-  Dissipation dissipation = Dissipation::delta_sph;
-  sph::kernel::Shape kernel = sph::kernel::Shape::cubic_spline;
+  // Of the water's sound waves and pressure noise; the defaults are the
+  // case's (docs/physics.md, "Choice of water").
+  Dissipation dissipation = Dissipation::riemann;
+  sph::kernel::Shape kernel = sph::kernel::Shape::wendland_c2;
   bool delta_plus_shifting = false;  // particle_shifting.hpp
   // fluid.wall_friction: how the momentum dissipation term acts against walls.
-  WallFriction wall_friction = WallFriction::dissipation;
+  WallFriction wall_friction = WallFriction::normal;
 };
+
+// h / dx when fluid.h_factor is unset: 1.5 for the Wendland C2 kernel, whose
+// lattice sums at 1.3 leave a still tank 2.7 % over hydrostatic pressure, and
+// 1.3 for the cubic spline (docs/physics.md, "Kernel").
+double default_h_factor(sph::kernel::Shape kernel);
+
+// A warning for the case's reader, or "": the Wendland C2 kernel below
+// h = 1.5 dx (an h_factor written for the cubic spline) holds still water
+// over hydrostatic pressure.
+std::string kernel_resolution_warning(const FluidParameters& p);
 
 // Throws sph::ConfigError naming the file, field and reason for bad input.
 FluidParameters read_fluid_parameters(const sph::CaseFile& case_file);

@@ -3,6 +3,7 @@
 #include <omp.h>
 
 #include <iostream>
+#include <string>
 
 #include "fluid_parameters.hpp"
 #include "fluid_solver.hpp"
@@ -23,6 +24,9 @@ int run_fluid(int argc, char** argv) {
   const sph::CaseFile case_file = sph::load_case(args.case_path, args.overrides);
   const auto parameters = cosph::fluid::read_fluid_parameters(case_file);
   sph::check_particle_budget(case_file);
+  if (const std::string warning = cosph::fluid::kernel_resolution_warning(parameters);
+      !warning.empty())
+    std::cerr << "cosph-fluid: warning: " << case_file.path << ": " << warning << std::endl;
   const bool coupled = !args.endpoint.empty();
   sph::require(coupled || !case_file.config.has_solid(), case_file, "solid",
                "this case is coupled: run it with coupler/cosph, which starts the coupler");

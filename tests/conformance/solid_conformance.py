@@ -50,7 +50,6 @@ What is checked (docs/coupling.md, "A solid model of your own" explains why):
                  within the timeout plus a few seconds, leaving no process.
 """
 import argparse
-import glob
 import json
 import os
 import re
@@ -98,7 +97,7 @@ def case_text(body, clamp=None, tip=None, youngs_modulus=1e6, poisson=POISSON, e
         "title: \"solid conformance\"",
         f"run {{ end_time: {end_time!r} output_interval: {output_interval!r} "
         f"snapshot_interval: {(snapshot_interval or end_time)!r} threads: 1 }}",
-        "fluid { spacing: %r }" % dx,
+        "fluid { spacing: %r density: 1000 }" % dx,
         "solid {",
         model.rstrip("\n"),
         f"  executable: {json.dumps(SOLID)}",
@@ -283,7 +282,7 @@ class Plan(unittest.TestCase):
             path = os.path.join(folder, "case.pbtxt")
             with open(path, "w") as f:
                 f.write(case_text((0, 0, 0.02, 0.02)).replace(
-                    "fluid { spacing: %r }\n" % DX, ""))   # the solid alone
+                    "fluid { spacing: %r density: 1000 }\n" % DX, ""))   # the solid alone
             code, programs, err = planned_programs(path)
             self.assertEqual(code, 0, err)
             self.assertEqual(programs, [SOLID], "cosph-case plan would start another program")

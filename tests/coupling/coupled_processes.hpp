@@ -25,7 +25,7 @@ class CoupledProcesses {
   void write_case(double timeout) {
     std::ostringstream text;
     text << "run { end_time: 0.02 output_interval: 0.0005 snapshot_interval: 0.02 }\n"
-         << "fluid { spacing: 0.001 }\nsolid { spacing: 0.001 }\n"
+         << "fluid { spacing: 0.001 density: 1000 }\nsolid { spacing: 0.001 }\n"
          << "coupling { timeout: " << timeout << " }\n";
     write_text(dir_.file("case.pbtxt"), text.str());
     timeout_ = timeout;

@@ -69,7 +69,7 @@ class CouplerWithDummies : public ::testing::Test {
     std::ostringstream text;
     text << "run { end_time: " << kEndTime << " output_interval: " << output_interval
          << " snapshot_interval: 0.02 }\n"
-         << "fluid { spacing: 0.001 }\nsolid { spacing: 0.001 }\n"
+         << "fluid { spacing: 0.001 density: 1000 }\nsolid { spacing: 0.001 }\n"
          << "coupling { timeout: " << timeout << " max_substeps: " << max_substeps
          << " wall_acceleration: " << (wall_acceleration ? "true" : "false") << " }\n";
     cosph::testing::write_text(dir_.file("case.pbtxt"), text.str());

@@ -380,7 +380,8 @@ TEST(CrossPhaseForces, TheCaseRiemannDissipationReachesTheMovingWall) {
   const auto cross_phase = [&](const std::vector<std::string>& settings) {
     return cosph::coupler::read_coupler_settings(sph::load_case(plate, settings)).cross_phase;
   };
-  EXPECT_FALSE(cross_phase({}).riemann_dissipation);
+  EXPECT_TRUE(cross_phase({}).riemann_dissipation);
+  EXPECT_FALSE(cross_phase({"fluid.dissipation=delta_sph"}).riemann_dissipation);
   EXPECT_FALSE(cross_phase({"fluid.dissipation=fourtakas"}).riemann_dissipation);
   const CrossPhaseParameters riemann = cross_phase({"fluid.dissipation=riemann"});
   EXPECT_TRUE(riemann.riemann_dissipation);
@@ -441,7 +442,8 @@ TEST(CrossPhaseForces, TheCaseWallFrictionReachesTheMovingWall) {
     return cosph::coupler::read_coupler_settings(sph::load_case(plate, settings))
         .cross_phase.wall_friction;
   };
-  EXPECT_EQ(friction({}), WallFriction::dissipation);
+  EXPECT_EQ(friction({}), WallFriction::normal);
+  EXPECT_EQ(friction({"fluid.wall_friction=dissipation"}), WallFriction::dissipation);
   EXPECT_EQ(friction({"fluid.wall_friction=none"}), WallFriction::none);
   EXPECT_EQ(friction({"fluid.wall_friction=normal"}), WallFriction::normal);
   EXPECT_EQ(friction({"fluid.wall_friction=normal", "coupling.interface=stress_sum"}),
@@ -556,7 +558,7 @@ TEST(CrossPhaseForces, TheCaseKernelReachesTheMovingWall) {
         .cross_phase.kernel;
   };
   using sph::kernel::Shape;
-  EXPECT_EQ(kernel({}), Shape::cubic_spline);
+  EXPECT_EQ(kernel({}), Shape::wendland_c2);
   EXPECT_EQ(kernel({"fluid.kernel=cubic_spline"}), Shape::cubic_spline);
   EXPECT_EQ(kernel({"fluid.kernel=wendland_c2", "fluid.h_factor=2.0"}), Shape::wendland_c2);
   EXPECT_EQ(

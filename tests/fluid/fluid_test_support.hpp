@@ -20,7 +20,9 @@
 
 namespace cosph::fluid::testing {
 
-// Parameters of water at spacing dx, h = 1.3 dx, without gravity unless given.
+// Parameters of water at spacing dx, without gravity unless given: delta-SPH
+// with the cubic spline at h = 1.3 dx and the walls' friction, the water these
+// tests were written for, spelled out rather than taken from the defaults.
 inline FluidParameters water_parameters(double dx, const Vec2& gravity = Vec2::Zero()) {
   FluidParameters p{};
   p.run = sph::RunParameters{1.0, 0.01, 0.1, 0.25, gravity, 0};
@@ -32,6 +34,9 @@ inline FluidParameters water_parameters(double dx, const Vec2& gravity = Vec2::Z
   p.delta = 0.1;
   p.A = 0.02;
   p.B = 0.1;
+  p.dissipation = Dissipation::delta_sph;
+  p.kernel = sph::kernel::Shape::cubic_spline;
+  p.wall_friction = WallFriction::dissipation;
   p.left_wall_x = 0.0;
   p.floor_y = 0.0;
   return p;

@@ -26,6 +26,11 @@ namespace cosph::fluid {
 namespace {
 
 const std::string kDamBreak = std::string(COSPH_SOURCE_DIR) + "/cases/dam_break.pbtxt";
+// The default water before the Riemann solver's (docs/physics.md, "The default
+// water"): delta-SPH, the cubic spline at h = 1.3 dx, the walls' friction.
+const std::vector<std::string> kEarlierWater = {"fluid.dissipation=delta_sph",
+                                                "fluid.kernel=cubic_spline", "fluid.h_factor=1.3",
+                                                "fluid.wall_friction=dissipation"};
 constexpr double kRho0 = 1000.0, kC0 = 23.8, kG = 9.81;
 
 TEST(RiemannDissipation, DampsOnlyApproachAndIsLimitedToTheSoundSpeed) {
@@ -156,10 +161,34 @@ TEST(Dissipation, AnUnknownNameIsRefusedNamingTheField) {
   }
 }
 
+// The default water (docs/physics.md, "Choice of water"): the Riemann
+// solver, the Wendland C2 kernel at its own h = 1.5 dx, walls damping along
+// their normal; the cubic spline keeps its 1.3 dx. An h_factor written for
+// the cubic spline is kept, with a warning, under the Wendland kernel.
+TEST(DefaultWater, IsTheRiemannSolverWithTheWendlandKernelAtItsOwnH) {
+  const auto parameters = [](const std::vector<std::string>& settings) {
+    return read_fluid_parameters(sph::load_case(kDamBreak, settings));
+  };
+  const FluidParameters water = parameters({});
+  EXPECT_EQ(water.dissipation, Dissipation::riemann);
+  EXPECT_EQ(water.kernel, sph::kernel::Shape::wendland_c2);
+  EXPECT_EQ(water.wall_friction, WallFriction::normal);
+  EXPECT_DOUBLE_EQ(water.h, 1.5 * water.dx);
+  EXPECT_EQ(kernel_resolution_warning(water), "");
+  EXPECT_DOUBLE_EQ(parameters({"fluid.kernel=cubic_spline"}).h, 1.3 * water.dx);
+
+  const std::string warning = kernel_resolution_warning(parameters({"fluid.h_factor=1.3"}));
+  EXPECT_NE(warning.find("fluid.h_factor 1.3"), std::string::npos) << warning;
+  EXPECT_EQ(
+      kernel_resolution_warning(parameters({"fluid.h_factor=1.3", "fluid.kernel=cubic_spline"})),
+      "");
+  EXPECT_EQ(kernel_resolution_warning(parameters({"fluid.h_factor=2"})), "");
+}
+
 // The dam break's tank filled to H = 0.288 m at 8 mm: after 0.4 s the water at
 // the bottom (y < 0.05 m) holds rho0 g (H - y) within 2 % on average, and
-// nothing moves faster than 5 % of sqrt(g H). Each option of the case is set
-// on its own (the default being delta_sph, the cubic spline, no shifting).
+// nothing moves faster than 5 % of sqrt(g H). The case's default water, and
+// each option set on its own on the earlier default (kEarlierWater).
 class StillTankWith : public ::testing::TestWithParam<std::vector<std::string>> {};
 
 TEST_P(StillTankWith, HoldsHydrostaticPressure) {
@@ -189,14 +218,19 @@ TEST_P(StillTankWith, HoldsHydrostaticPressure) {
 // hydrostatic pressure. The Wendland C2 kernel needs h = 1.5 dx: at 1.3 dx
 // its lattice sum of x (x) grad W is 0.974 I and the band reads 2.7 % high.
 using Settings = std::vector<std::string>;
+Settings on_earlier_water(const Settings& option) {
+  Settings settings = kEarlierWater;
+  settings.insert(settings.end(), option.begin(), option.end());
+  return settings;
+}
 INSTANTIATE_TEST_SUITE_P(
     EachOption, StillTankWith,
-    ::testing::Values(Settings{"fluid.dissipation=delta_sph"},
-                      Settings{"fluid.dissipation=fourtakas"},
-                      Settings{"fluid.dissipation=riemann"},
-                      Settings{"fluid.kernel=wendland_c2", "fluid.h_factor=1.5"},
-                      Settings{"fluid.shifting=delta_plus"}, Settings{"fluid.wall_friction=none"},
-                      Settings{"fluid.wall_friction=normal"}));
+    ::testing::Values(Settings{}, kEarlierWater, on_earlier_water({"fluid.dissipation=fourtakas"}),
+                      on_earlier_water({"fluid.dissipation=riemann"}),
+                      on_earlier_water({"fluid.kernel=wendland_c2", "fluid.h_factor=1.5"}),
+                      on_earlier_water({"fluid.shifting=delta_plus"}),
+                      on_earlier_water({"fluid.wall_friction=none"}),
+                      on_earlier_water({"fluid.wall_friction=normal"})));
 
 }  // namespace
 }  // namespace cosph::fluid

@@ -27,11 +27,8 @@ run {
 }
 fluid {
   spacing: 0.01
-  h_factor: 1.3
   density: 1000
   viscosity: 1.307e-3
-  density_diffusion: 0.1
-  artificial_viscosity: 0.02
   water { min { x: 0 y: 0 } max { x: 0.4 y: 0.2 } }
   walls { min { x: -0.03 y: -0.03 } max { x: 0.43 y: 0 } }
   walls { min { x: -0.03 y: 0 } max { x: 0 y: 0.3 } }

@@ -99,7 +99,8 @@ TEST(WallFriction, IsReadFromTheCaseAndAnUnknownValueIsRefusedNamingTheField) {
     return read_fluid_parameters(sph::load_case(kDamBreak, {setting})).wall_friction;
   };
   EXPECT_EQ(read_fluid_parameters(sph::load_case(kDamBreak, {})).wall_friction,
-            WallFriction::dissipation);
+            WallFriction::normal);
+  EXPECT_EQ(friction("fluid.wall_friction=dissipation"), WallFriction::dissipation);
   EXPECT_EQ(friction("fluid.wall_friction=none"), WallFriction::none);
   EXPECT_EQ(friction("fluid.wall_friction=normal"), WallFriction::normal);
   try {

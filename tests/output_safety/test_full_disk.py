@@ -64,9 +64,9 @@ class FullDiskKeepsFilesWhole(unittest.TestCase):
             [float(v) for v in line.split(",")]
 
     def test_the_index_fills_first(self):
-        # A snapshot of the dam break takes 160 kB, the index 2.1 kB more with
-        # each: it passes the limit at about the 86th of the 100 due.
-        proc = self.run_fluid(180_000)
+        # A snapshot of the dam break takes 181 kB, the index 2.1 kB more with
+        # each: it passes the limit at about the 90th of the 100 due.
+        proc = self.run_fluid(190_000)
         self.assertEqual(proc.returncode, 1, proc.stderr)
         self.assertIn(f"{self.out}/fluid.xdmf: cannot write it (File too large)", proc.stderr)
         self.assert_whole()
@@ -74,7 +74,7 @@ class FullDiskKeepsFilesWhole(unittest.TestCase):
 
     def test_a_checkpoint_that_does_not_fit(self):
         # A checkpoint holds every array: larger than a snapshot, past the limit.
-        proc = self.run_fluid(180_000, checkpoint_interval=0.05)
+        proc = self.run_fluid(190_000, checkpoint_interval=0.05)
         self.assertEqual(proc.returncode, 1, proc.stderr)   # not SIGSEGV at exit
         self.assertRegex(proc.stderr, rf"{self.out}/checkpoints/fluid_\d+\.h5: cannot write it "
                                       r"\(File too large\)")

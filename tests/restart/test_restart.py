@@ -320,11 +320,11 @@ class ElasticPlateInterruptedWithAStalledSolid(InterruptedCase, unittest.TestCas
 
 class PlateFractureAfterFailure(RestartCase, unittest.TestCase):
     """Resumed from a checkpoint after the first particles failed (the short
-    mode of tests/case_runs/test_plate_fracture_short.py, cut at 0.03 s)."""
+    mode of tests/case_runs/test_plate_fracture_short.py, run to 0.035 s)."""
     CASE = "plate_fracture"
-    SETTINGS = ["run.end_time=0.03", "run.snapshot_interval=0.01",
+    SETTINGS = ["run.end_time=0.035", "run.snapshot_interval=0.01",
                 "coupling.max_substeps=32", "solid.fracture.weakened[0].yield_stress=4000"]
-    KILL_IN = 9  # at 0.027 s: the resume starts from 0.024 s, the band failed at 0.023 s
+    KILL_IN = 9  # at 0.0315 s: the resume starts from 0.028 s, the band failed at 0.025 s
 
     def test_resumed_after_the_first_failures(self):
         kept = sorted(glob.glob(os.path.join(self.resumed, "checkpoints", "solid_*.h5")))

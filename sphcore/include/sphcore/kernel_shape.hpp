@@ -1,6 +1,6 @@
 // Which kernel a phase's own pairs use (docs/physics.md, "Kernel"): the cubic
-// spline (kernel.hpp, the default everywhere) or the Wendland C2
-// (wendland_kernel.hpp). Both have support 2h, so the neighbour search, the
+// spline (kernel.hpp, the solids' and an option of the water) or the Wendland
+// C2 (wendland_kernel.hpp, the water's default). Both have support 2h, so the neighbour search, the
 // walls' thickness rule and the cost of a pair are the same for either.
 #pragma once
 
