@@ -49,6 +49,22 @@ def some_minor_labels(value, _position):
     return f"{value:g}" if round(mantissa) in (2, 3, 5) else ""
 
 
+def label_points(ax, runs):
+    """Each run's label (its own last part) beside its point, leaving out a
+    label whose text would land on one already placed: runs of one scene
+    often sit on nearly the same point, and their colour and the legend
+    still tell them apart."""
+    placed = []
+    ax.figure.canvas.draw()  # the axes' scales and limits, for display coordinates
+    for run in sorted(runs, key=lambda run: (run["wall_s"], run["error"])):
+        x, y = ax.transData.transform((run["wall_s"], run["error"]))
+        if any(abs(x - u) < 70 and abs(y - v) < 10 for u, v in placed):
+            continue
+        placed.append((x, y))
+        ax.annotate(run["label"].split(", ")[-1], (run["wall_s"], run["error"]),
+                    fontsize=7, xytext=(4, 4), textcoords="offset points")
+
+
 def draw(scenes, path, xlabel, legend_of=None):
     """One log-log panel per scene, two panels a row. With legend_of (series
     -> legend), series with the same legend share a colour across panels."""
@@ -66,12 +82,10 @@ def draw(scenes, path, xlabel, legend_of=None):
             colour = colours.setdefault(legend, f"C{len(colours)}")
             ax.plot([run["wall_s"] for run in runs], [run["error"] for run in runs], "o-",
                     color=colour, label=legend)
-            for run in runs:
-                ax.annotate(run["label"].split(", ")[-1], (run["wall_s"], run["error"]),
-                            fontsize=7, xytext=(4, 4), textcoords="offset points")
         # "scene: error (unit)" reads as the panel's title and its axis.
         title, _, ylabel = error_name.rpartition(": ")
         ax.set(xscale="log", yscale="log", xlabel=xlabel, ylabel=ylabel, title=title)
+        label_points(ax, [run for runs in series.values() for run in runs])
         for axis, (low, high) in ((ax.xaxis, ax.get_xlim()), (ax.yaxis, ax.get_ylim())):
             axis.set_major_formatter(FormatStrFormatter("%g"))
             # Minor labels only where the axis spans too little for major
@@ -79,7 +93,7 @@ def draw(scenes, path, xlabel, legend_of=None):
             axis.set_minor_formatter(FormatStrFormatter("%g") if high / low < 3 else
                                      FuncFormatter(some_minor_labels) if high / low < 30 else
                                      NullFormatter())
-        ax.legend(fontsize=8)
+        ax.legend(fontsize=8, framealpha=0.6)
     fig.tight_layout()
     fig.savefig(os.path.join(cr.FIGURES, path), dpi=110)
 
