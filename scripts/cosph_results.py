@@ -23,16 +23,30 @@ FIGURES = os.path.join(REPO, "docs", "figures")
 RESULTS = os.path.join(REPO, "docs", "results")
 
 
-def water(dissipation="delta_sph", kernel="cubic_spline", h_factor=1.3,
-          wall_friction="dissipation", shifting="none"):
+# The water the comparisons were first made against, the default before the
+# Riemann solver's (docs/physics.md, "Choice of water"): every choice of the
+# fluid block that water() spells out.
+EARLIER_WATER = {"dissipation": "delta_sph", "kernel": "cubic_spline", "h_factor": 1.3,
+                 "wall_friction": "dissipation", "shifting": "none"}
+
+
+def water(**choices):
     """The --set settings of a water with every choice of its fluid block
     spelled out (proto/case.proto, Fluid), so that a table's row names the
-    same water whatever the case or the code take by default. The keywords
-    default to delta-SPH with the cubic spline at h = 1.3 dx and the walls'
-    friction, the water the comparisons were first made against."""
-    return [f"fluid.dissipation={dissipation}", f"fluid.kernel={kernel}",
-            f"fluid.h_factor={h_factor:g}", f"fluid.wall_friction={wall_friction}",
-            f"fluid.shifting={shifting}"]
+    same water whatever the case or the code take by default: EARLIER_WATER
+    with CHOICES in place of its own."""
+    unknown = set(choices) - set(EARLIER_WATER)
+    if unknown:
+        raise ValueError(f"water(): no choice {sorted(unknown)} (known: {sorted(EARLIER_WATER)})")
+    return [f"fluid.{field}={value:g}" if isinstance(value, float) else f"fluid.{field}={value}"
+            for field, value in {**EARLIER_WATER, **choices}.items()]
+
+
+def setting(settings, field):
+    """The value --set SETTINGS give FIELD (the last one given wins, as for
+    the launcher), or None."""
+    values = [s.split("=", 1)[1] for s in settings if s.split("=", 1)[0] == field]
+    return values[-1] if values else None
 
 
 def script_arguments(doc, out=None):

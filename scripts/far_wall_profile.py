@@ -39,12 +39,11 @@ import sensor_support as ss  # noqa: E402
 import validate_dam_break as dam  # noqa: E402
 
 SPACING = 0.004
-RUNS = [  # (key, label, settings, kernel, h_factor)
-    ("default", "delta-SPH, cubic spline, h = 1.3 dx (the earlier default)", cr.water(), "cubic_spline",
-     1.3),
-    ("riemann", "Riemann, cubic spline, h = 1.3 dx", cr.water(**pn.RIEMANN), "cubic_spline", 1.3),
+RUNS = [  # (key, label, settings)
+    ("default", "delta-SPH, cubic spline, h = 1.3 dx (the earlier default)", cr.water()),
+    ("riemann", "Riemann, cubic spline, h = 1.3 dx", cr.water(**pn.RIEMANN)),
     ("riemann_wendland_2dx", "Riemann, Wendland C2, h = 2 dx",
-     cr.water(**pn.RIEMANN, **pn.WENDLAND_2DX), "wendland_c2", 2.0),
+     cr.water(**pn.RIEMANN, **pn.WENDLAND_2DX)),
 ]
 SNAPSHOT_INTERVAL = 0.005  # s: 40 snapshots over the window
 FAR_WALL_X = ss.PROBE[0]
@@ -136,7 +135,9 @@ def main():
 
     fig, (ax_p, ax_u) = plt.subplots(1, 2, figsize=(11, 5))
     rows = []
-    for n, (key, label, settings, kernel, h_factor) in enumerate(RUNS):
+    for n, (key, label, settings) in enumerate(RUNS):
+        kernel = cr.setting(settings, "fluid.kernel")
+        h_factor = float(cr.setting(settings, "fluid.h_factor"))
         folder = os.path.join(args.out, key)
         series = ss.run_after_impact(folder, settings, SPACING, SNAPSHOT_INTERVAL, args.reuse)
         profile, u, layer_u, gain, count = measure(folder, kernel, h_factor * SPACING)

@@ -54,7 +54,7 @@ def case_probe(index):
 
 PROBE = case_probe(1)  # probe1, on the far wall
 ALPHA = 0.02  # Monaghan's alpha of the delta-SPH water (its default, proto/case.proto)
-H_FACTOR = 1.3  # the delta-SPH water's (cr.water), the comparison's reference
+H_FACTOR = cr.EARLIER_WATER["h_factor"]  # delta-SPH's, the comparison's reference
 RUNS = [  # (key, label, settings)
     ("default", "delta-SPH, cubic spline, h = 1.3 dx (the earlier default)", cr.water()),
     ("wendland_2dx", "delta-SPH, Wendland C2, h = 2 dx", cr.water(**pn.WENDLAND_2DX)),

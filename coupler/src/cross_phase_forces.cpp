@@ -128,6 +128,10 @@ void add_moving_wall(const sph::InterfaceParticles& F, const sph::InterfaceParti
   P_w.resize(S.size());
   for (std::size_t s = 0; s < S.size(); ++s)
     P_w[s] = sums[s].wall_pressure(accelerating ? Vec2(par.gravity - S.a[s]) : par.gravity);
+  // Each solid particle's normal once, not per pair: only "normal" reads it.
+  std::vector<Vec2> n_s(S.size(), Vec2::Zero());
+  if (par.wall_friction == fluid::WallFriction::normal)
+    for (std::size_t s = 0; s < S.size(); ++s) n_s[s] = sums[s].normal_to_water();
 
   for (const Pair& p : pairs) {
     const double rho_f = F.rho[p.f], V_s = S.m[p.s] / S.rho[p.s];
@@ -140,10 +144,8 @@ void add_moving_wall(const sph::InterfaceParticles& F, const sph::InterfaceParti
       else
         return sph::artificial_viscosity(x_fs, v, p.h_fs, F.c[p.f], rho, par.A, par.B);
     };
-    // The normal only where it is read: the default's pairs take no square root for it.
-    const Vec2 n_s = par.wall_friction == fluid::WallFriction::normal ? sums[p.s].normal_to_water()
-                                                                      : Vec2(Vec2::Zero());
-    const double Pi_fs = fluid::wall_dissipation(Pi, par.wall_friction, p.x_fs, v_fs, n_s, rho_f);
+    const double Pi_fs =
+        fluid::wall_dissipation(Pi, par.wall_friction, p.x_fs, v_fs, n_s[p.s], rho_f);
     // The wall particle has the water's density and the solid particle's volume.
     const Vec2 a_f =
         sph::momentum_pair(V_s * rho_f, F.sigma[p.f], -P_w[p.s] * sph::Mat2::Identity(), rho_f,

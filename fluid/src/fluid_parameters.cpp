@@ -16,6 +16,7 @@ Dissipation read_dissipation(const sph::CaseFile& case_file) {
   require(name.empty() || name == "delta_sph" || name == "fourtakas" || name == "riemann",
           case_file, "fluid.dissipation",
           "unknown dissipation '" + name + "' (known: delta_sph, fourtakas, riemann)");
+  if (name.empty()) return FluidParameters{}.dissipation;
   return name == "delta_sph"   ? Dissipation::delta_sph
          : name == "fourtakas" ? Dissipation::fourtakas
                                : Dissipation::riemann;
@@ -26,6 +27,7 @@ WallFriction read_wall_friction(const sph::CaseFile& case_file) {
   require(name.empty() || name == "dissipation" || name == "none" || name == "normal", case_file,
           "fluid.wall_friction",
           "unknown wall friction '" + name + "' (known: dissipation, none, normal)");
+  if (name.empty()) return FluidParameters{}.wall_friction;
   return name == "none"          ? WallFriction::none
          : name == "dissipation" ? WallFriction::dissipation
                                  : WallFriction::normal;
@@ -35,6 +37,7 @@ sph::kernel::Shape read_kernel_shape(const sph::CaseFile& case_file) {
   const std::string& name = case_file.config.fluid().kernel();
   require(name.empty() || name == "cubic_spline" || name == "wendland_c2", case_file,
           "fluid.kernel", "unknown kernel '" + name + "' (known: cubic_spline, wendland_c2)");
+  if (name.empty()) return FluidParameters{}.kernel;
   return name == "cubic_spline" ? sph::kernel::Shape::cubic_spline
                                 : sph::kernel::Shape::wendland_c2;
 }

@@ -30,8 +30,9 @@ struct FluidParameters {
   std::vector<double> level_probes;      // x of each water-level gauge
   std::vector<WallMotion> wall_motions;  // of fluid.moving_walls, in order
 
-  // Of the water's sound waves and pressure noise; the defaults are the
-  // case's (docs/physics.md, "Choice of water").
+  // Of the water's sound waves and pressure noise. These defaults are the
+  // case's: the readers below return them for an unset field (docs/physics.md,
+  // "Choice of water").
   Dissipation dissipation = Dissipation::riemann;
   sph::kernel::Shape kernel = sph::kernel::Shape::wendland_c2;
   bool delta_plus_shifting = false;  // particle_shifting.hpp
