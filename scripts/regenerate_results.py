@@ -58,6 +58,7 @@ STEPS = [
     ("interface_acceleration", ["interface_acceleration.py"], "accuracy"),
     ("shell_coupled", ["validate_shell_coupled.py"], "accuracy"),
     ("shell_windows", ["shell_window_vibration.py"], "accuracy"),
+    ("shell_window_waters", ["shell_window_waters.py"], "accuracy"),
     ("shell_clamp_contact_line", ["shell_clamp_contact_line.py"], "accuracy"),
     ("hydrostatic_plate", ["validate_hydrostatic_plate.py"], "accuracy"),
     ("plate_fracture", ["validate_plate_fracture.py"], "accuracy"),

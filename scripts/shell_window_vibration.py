@@ -19,6 +19,7 @@ usage: /usr/bin/python3 scripts/shell_window_vibration.py [--reuse]
 """
 import math
 import os
+import re
 
 import numpy as np
 
@@ -38,30 +39,50 @@ def rotation_frequency():
     return math.sqrt(SHEAR_CORRECTION * G * THICKNESS / (RHO * THICKNESS ** 3 / 12.0))
 
 
+def coupler_share():
+    """kRiemannCouplingStiffnessShare as the coupler has it: the share s of
+    the damping bound for a Riemann water (docs/auto_substeps.md)."""
+    with open(os.path.join(cr.REPO, "coupler", "src", "substep_choice.hpp")) as header:
+        found = re.search(r"kRiemannCouplingStiffnessShare = ([0-9.eE+-]+);", header.read())
+    return float(found.group(1))
+
+
+def cut_off_damping_ratio(spacing):
+    """zeta_r, the damping's ratio at the shear-rotation cut-off for a
+    mid-line spacing (h = 1.3 dx; solid/shell/shell_damping.hpp): what the
+    shell states in its Hello."""
+    G = E / (2.0 * (1.0 + NU))
+    c_G = math.sqrt(G / RHO)
+    eta_s = 0.25 * RHO * c_G * min(THICKNESS, 1.3 * spacing)
+    stiffness_inertia = SHEAR_CORRECTION * G * THICKNESS * RHO * THICKNESS ** 3 / 12.0
+    return SHEAR_CORRECTION * THICKNESS * eta_s / (2.0 * math.sqrt(stiffness_inertia))
+
+
 def damping_ratios():
     """The damping's ratios by its rule (solid/shell/shell_damping.hpp), h = 1.3 dx:
     the first bending mode of the free length L = 0.079 m (Euler-Bernoulli,
     plane strain) at the case's 1 mm, and the shear-rotation cut-off at the
     mid-line spacings of the convergence runs, in words."""
-    E_plane, G = E / (1.0 - NU ** 2), E / (2.0 * (1.0 + NU))
-    c, c_G = math.sqrt(E_plane / RHO), math.sqrt(G / RHO)
+    E_plane = E / (1.0 - NU ** 2)
+    c = math.sqrt(E_plane / RHO)
     omega_1 = (1.875 / 0.079) ** 2 * math.sqrt(E_plane * THICKNESS ** 2 / (12.0 * RHO))
     bending = 0.5 * RHO * c * 1.3e-3 * omega_1 / (2.0 * E_plane)
-    cut_off, bound = [], []
     omega_r = rotation_frequency()
-    for dx in (0.002, 0.001, 0.0005):
-        eta_s = 0.25 * RHO * c_G * min(THICKNESS, 1.3 * dx)
-        stiffness_inertia = SHEAR_CORRECTION * G * THICKNESS * RHO * THICKNESS ** 3 / 12.0
-        cut_off.append(SHEAR_CORRECTION * THICKNESS * eta_s / (2.0 * math.sqrt(stiffness_inertia)))
-        bound.append(2.0 * cut_off[-1] / omega_r)
+    cut_off = [cut_off_damping_ratio(dx) for dx in (0.002, 0.001, 0.0005)]
+    bound = [2.0 * zeta / omega_r for zeta in cut_off]
+    share = coupler_share()
     return ("Damping ratios of the shell's damping by its rule: the first bending mode "
             f"{bending:.1e} (at h = 1.3 mm); the shear-rotation cut-off "
             + " / ".join(f"{z:.2f}" for z in cut_off)
             + " at the mid-line spacings 2 / 1 / 0.5 mm (h = 1.3 dx); the axial and rotation "
             f"zigzags h / (2 ds) = {1.3 / 2:.2f}. The automatic stepping's window bound "
-            "2 zeta_r / omega_r (docs/auto_substeps.md, \"Solids with weakly damped modes\") at "
-            "these spacings: " + " / ".join(f"{1e6 * w:.1f}" for w in bound) + " us, omega_r W <= "
-            + " / ".join(f"{omega_r * w:.2f}" for w in bound) + ".")
+            "2 zeta_r / (s omega_r) (docs/auto_substeps.md, \"Solids with weakly damped modes\") "
+            "at these spacings: with a delta-SPH water (s = 1) "
+            + " / ".join(f"{1e6 * w:.1f}" for w in bound) + " us, omega_r W <= "
+            + " / ".join(f"{omega_r * w:.2f}" for w in bound)
+            + f"; with a Riemann water, the default (s = {share:g}), "
+            + " / ".join(f"{1e6 * w / share:.1f}" for w in bound) + " us, omega_r W <= "
+            + " / ".join(f"{omega_r * w / share:.2f}" for w in bound) + ".")
 
 
 def stepping(out):

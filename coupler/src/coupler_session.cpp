@@ -251,7 +251,8 @@ class Session {
   void take_the_solids_damping_into_account() {
     if (settings_.solid_at_fluid_step) return;
     const SubstepChoice choice = account_for_the_solids_damping(
-        {settings_.max_substeps, settings_.added_mass_ratio, settings_.stepping_reason},
+        {settings_.max_substeps, settings_.added_mass_ratio, settings_.stepping_reason,
+         settings_.coupling_stiffness_share},
         solid_damping_, peers_[kSolid].solver);
     const bool unchanged =
         choice.max_substeps == settings_.max_substeps && choice.max_window == settings_.max_window;

@@ -25,6 +25,7 @@ struct CouplerSettings {
   // -1: the solid's Hello can still make an automatic multi-rate choice
   // synchronised or bound its windows (account_for_the_solids_damping).
   double added_mass_ratio = -1.0;
+  double coupling_stiffness_share = 1.0;  // s of the damping bound, by the water
   // s, the longest multi-rate window the solid's damping allows
   // (account_for_the_solids_damping), set from its Hello; infinite: no bound.
   double max_window = std::numeric_limits<double>::infinity();

@@ -96,6 +96,7 @@ CouplerSettings read_coupler_settings(const sph::CaseFile& case_file) {
   settings.max_substeps = substeps.max_substeps;
   settings.stepping_reason = substeps.reason;
   settings.added_mass_ratio = substeps.added_mass_ratio;
+  settings.coupling_stiffness_share = substeps.coupling_stiffness_share;
   sph::require(coupling.solid_step().empty() || coupling.solid_step() == "own" ||
                    coupling.solid_step() == "fluid",
                case_file, "coupling.solid_step",

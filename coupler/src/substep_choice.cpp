@@ -76,8 +76,12 @@ SubstepChoice read_substep_choice(const sph::CaseFile& case_file) {
   try {
     const auto fluid = cosph::fluid::read_fluid_parameters(case_file);
     const auto solid = cosph::solid::read_solid_parameters(case_file);
-    return choose_substeps(
+    SubstepChoice choice = choose_substeps(
         {fluid.run.cfl, fluid.rho0, fluid.c0, fluid.h, solid.rho0, solid.c0, solid.h, thickness});
+    choice.coupling_stiffness_share = fluid.dissipation == cosph::fluid::Dissipation::riemann
+                                          ? kRiemannCouplingStiffnessShare
+                                          : kCouplingStiffnessShare;
+    return choice;
   } catch (const sph::ConfigError& error) {
     // The solvers check their own blocks; a solid program of the user's own
     // may read fields the built-in solids refuse.
@@ -102,16 +106,20 @@ SubstepChoice account_for_the_solids_damping(const SubstepChoice& choice,
             "synchronised (automatic: " + solid +
                 " reports modes it does not damp, which the held forces of multi-rate windows "
                 "pump; docs/auto_substeps.md" +
-                added_mass + ")"};
-  const double max_window = kDampingWindowMargin * 4.0 * zeta / (kCouplingStiffnessShare * omega);
+                added_mass + ")",
+            choice.coupling_stiffness_share};
+  const double s = choice.coupling_stiffness_share;
+  const double max_window = kDampingWindowMargin * 4.0 * zeta / (s * omega);
   std::ostringstream why;
   why << multi_rate_words(choice.max_substeps) << ", windows at most " << max_window
       << " s (automatic: set by the damping of " << solid
       << " at its fastest mode: a held force's negative damping s omega W / 4 below the mode's "
          "damping ratio with a safety factor 2, W <= 2 zeta / (s omega) with zeta "
-      << zeta << ", omega " << omega << " rad/s, s " << kCouplingStiffnessShare
+      << zeta << ", omega " << omega << " rad/s, s " << s
+      << (s == kRiemannCouplingStiffnessShare ? " (the Riemann water's, measured)"
+                                              : " (the whole mode's)")
       << "; omega W <= " << omega * max_window << added_mass << ")";
-  return {choice.max_substeps, choice.added_mass_ratio, why.str(), max_window};
+  return {choice.max_substeps, choice.added_mass_ratio, why.str(), s, max_window};
 }
 
 }  // namespace cosph::coupler

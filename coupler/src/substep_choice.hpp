@@ -51,6 +51,10 @@ struct SubstepChoice {
   int max_substeps;              // 1: synchronised; more: multi-rate (common_step.hpp)
   double added_mass_ratio = -1;  // mu_W when chosen automatically, else -1
   std::string reason;            // for the run's log: what was chosen and why
+  // s, the held force's share of a solid mode's stiffness that the damping
+  // bound takes (account_for_the_solids_damping): by the case's water,
+  // coupling_stiffness_share.
+  double coupling_stiffness_share = 1.0;
   // s, the longest multi-rate window the solid's damping allows
   // (account_for_the_solids_damping); infinite: no such bound.
   double max_window = std::numeric_limits<double>::infinity();
@@ -59,7 +63,8 @@ struct SubstepChoice {
 // The automatic choice from the added-mass ratio.
 SubstepChoice choose_substeps(const AddedMassInputs& in);
 
-// The case's coupling.max_substeps: >= 1 as set, 0 automatic. A case that
+// The case's coupling.max_substeps: >= 1 as set, 0 automatic (with the
+// coupling share s of the case's water, for the damping bound). A case that
 // does not give what the rule needs (no solid.body, a solid program's own
 // fields) gets synchronised steps, the safe side, and the reason says so.
 // Throws sph::ConfigError for a negative value.
@@ -72,9 +77,15 @@ struct SolidDamping {
   double fastest_mode_damping_ratio = 0;      // zeta, by the solid's own damping
 };
 
-// The coupling's share of a mode's stiffness that the negative damping of a
-// held force is taken at: at most the whole (the coupling no stiffer than
-// the mode itself), the safe side, as the rule cannot know the share.
+// The coupling's share s of a mode's stiffness that the negative damping of
+// a held force is taken at. For a water whose pair terms against the solid
+// solve the acoustic Riemann problem (fluid.dissipation riemann) the share
+// measured on the shell's fastest mode: the smallest bound the quiet long-
+// window runs of docs/results/shell_window_waters.md set, rounded down (the
+// delta-SPH waters pumped the same shell at the same windows). For any other
+// water the whole (the coupling no stiffer than the mode itself), the safe
+// side where nothing was measured.
+inline constexpr double kRiemannCouplingStiffnessShare = 0.2;
 inline constexpr double kCouplingStiffnessShare = 1.0;
 // The window is kept at this fraction of the length where the mode's own
 // damping only just outweighs the hold's: a safety factor 2, as the
@@ -87,9 +98,10 @@ inline constexpr double kDampingWindowMargin = 0.5;
 // own damping ratio zeta outweighs it for W < 4 zeta / (s omega); with the
 // margin, an automatic multi-rate choice keeps
 //     W <= 2 zeta / (s omega),
-// the window bound it takes from the solid's Hello (max_window; the window is then no longer than
-// that, nor shorter than the smaller proposal: common_step.hpp). A solid that reports modes it does
-// not damp (zeta = 0) gets synchronised steps. An explicit max_substeps, a
+// with s = choice.coupling_stiffness_share, the window bound it takes from
+// the solid's Hello (max_window; the window is then no longer than that, nor
+// shorter than the smaller proposal: common_step.hpp). A solid that reports
+// modes it does not damp (zeta = 0) gets synchronised steps. An explicit max_substeps, a
 // choice that is synchronised already and a solid that sends nothing are
 // returned unchanged.
 SubstepChoice account_for_the_solids_damping(const SubstepChoice& choice,

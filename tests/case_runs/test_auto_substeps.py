@@ -4,8 +4,8 @@ multi-rate coupling for the elastic plate and synchronised steps for a plate
 its first line, and then steps exactly as the explicit setting would. A solid
 that reports undamped modes in its Hello (the shell without its damping) turns
 the multi-rate choice into synchronised steps, on a later line; the damped
-shell keeps multi-rate, its windows no longer than 2 zeta / omega of its
-fastest mode (its Hello), and says so."""
+shell keeps multi-rate, its windows no longer than 2 zeta / (s omega) of its
+fastest mode (its Hello) with s by the case's water, and says so."""
 import os
 import re
 import shutil
@@ -77,11 +77,11 @@ class UndampedShellTakesSynchronisedSteps(AutomaticChoice, unittest.TestCase):
     END_TIME = 0.0005
 
 
-class DampedShellWindowsAreBoundByItsDamping(unittest.TestCase):
-    """Multi-rate, but each window no longer than 2 zeta / omega of the shell's
-    fastest mode (substep_choice.hpp): about 5 us at the case's 1 mm, where
-    the added-mass rule alone took the water's whole step (about 36 us)."""
-    SETTINGS = ["solid.model=shell"]
+class DampedShellWindows:
+    """Multi-rate, but each window no longer than 2 zeta / (s omega) of the
+    shell's fastest mode (its Hello) with the coupling share s of the case's
+    water (substep_choice.hpp)."""
+    SETTINGS, SHARE, LONGEST_SHARE_OF_WIDE = [], None, None
     END_TIME = 0.0005
 
     @classmethod
@@ -92,23 +92,45 @@ class DampedShellWindowsAreBoundByItsDamping(unittest.TestCase):
         cls.wide, _ = median_common_step("elastic_plate", cls.SETTINGS + [
             "coupling.max_substeps=32"], cls.END_TIME)
 
-    def bound(self):
+    def stated(self):
+        """(the bound, zeta, omega, s) as the last sub-stepping line gives them."""
         lines = re.findall(r"sub-stepping: (.*)", self.log)
         self.assertTrue(lines, self.log)
-        found = re.search(r"windows at most ([0-9.e+-]+) s", lines[-1])
+        found = re.search(r"windows at most ([0-9.e+-]+) s .* with zeta ([0-9.e+-]+), omega "
+                          r"([0-9.e+-]+) rad/s, s ([0-9.e+-]+)", lines[-1])
         self.assertTrue(found, lines[-1])
-        self.assertIn("zeta", lines[-1])
-        return float(found.group(1))
+        return [float(value) for value in found.groups()]
+
+    def test_the_bound_is_the_rule_with_the_waters_share(self):
+        bound, zeta, omega, share = self.stated()
+        self.assertEqual(share, self.SHARE)
+        # The log prints 6 digits.
+        self.assertAlmostEqual(bound / (2.0 * zeta / (share * omega)), 1.0, delta=1e-4)
 
     def test_the_window_is_the_damping_bound(self):
-        bound = self.bound()
-        # The log prints 6 digits; the water's and the shell's proposals lie on
-        # either side of the bound here, so the bound sets every window.
+        bound = self.stated()[0]
+        # The water's and the shell's proposals lie on either side of the bound
+        # here, so the bound sets every window, shorter than the added-mass
+        # rule's alone.
         self.assertAlmostEqual(self.auto / bound, 1.0, delta=1e-4)
-        self.assertLess(self.auto, 0.5 * self.wide)
+        self.assertLess(self.auto, self.LONGEST_SHARE_OF_WIDE * self.wide)
 
     def test_still_multi_rate(self):
         self.assertGreater(self.auto, 2.0 * self.sync)
+
+
+class DampedShellInTheDefaultWater(DampedShellWindows, unittest.TestCase):
+    # The Riemann water's measured share: about 26 us at the case's 1 mm, where
+    # the added-mass rule alone takes the water's whole step (about 45 us).
+    SETTINGS = ["solid.model=shell"]
+    SHARE, LONGEST_SHARE_OF_WIDE = 0.2, 0.7
+
+
+class DampedShellInADeltaSphWater(DampedShellWindows, unittest.TestCase):
+    # s = 1: about 5 us.
+    SETTINGS = ["solid.model=shell", "fluid.dissipation=delta_sph", "fluid.kernel=cubic_spline",
+                "fluid.h_factor=1.3"]
+    SHARE, LONGEST_SHARE_OF_WIDE = 1.0, 0.2
 
 
 if __name__ == "__main__":

@@ -40,7 +40,7 @@ class HydrostaticPlateShort(case_runs.CaseRunTest):
         # moving wall's pressure over the plate adds up to the water's weight
         # rho g H L (the held ends carry the water's walls, not water). The
         # kernel's cut at the plate's lower face (e = 0.05 m against a reach
-        # of 2 h = 0.052 m) and the corners allow a few per cent.
+        # of 2 h = 0.06 m) and the corners allow a few per cent.
         series = read_csv(os.path.join(self.out, "timeseries.csv"))
         self.assertEqual(series["t"][0], 0.0)
         self.assertAlmostEqual(-series["plate_force_y"][0] / hp.water_load(), 1.0, delta=0.03)
