@@ -79,6 +79,9 @@ def main():
     args = cr.script_arguments(__doc__).parse_args()
     omega_r = rotation_frequency()
     reference = run("default", DEFAULT, SYNCHRONISED_SPACING, 1, args.reuse)
+    if reference is None:
+        raise SystemExit("shell_window_waters: no synchronised run to measure the plate's own "
+                         "swing against")
     swing = max(largest_speeds(reference[0]))
     rows = [["the default (synchronised: the plate's own swing)", f"{SYNCHRONISED_SPACING * 1e3:g}",
              reference[3], "", "", f"{cut_off_damping_ratio(SYNCHRONISED_SPACING):.3f}",
