@@ -3,7 +3,7 @@
 
 Runs cases/elastic_plate.pbtxt through the launcher with solid.model=shell
 (the plate's box, 5 mm thick, read as a shell along its length), at three
-spacings of the solid (2, 1 and 0.5 mm; the water at the case's 2 mm), and
+spacings of the solid (2, 1, 0.5 and 0.25 mm; the water at the case's 2 mm), and
 in SPHinXsys's elastic gate configuration (issue 39: E = 7.8 MPa,
 nu = 0.47, water 2.5 mm, plate 1.25 mm, max_substeps 32). For each: the RMS
 error of the free end's displacement over the experimental points and the
@@ -27,11 +27,12 @@ SHELL = ["solid.model=shell"]
 PEER = ["solid.youngs_modulus=7.8e6", "solid.poisson_ratio=0.47", "fluid.spacing=0.0025",
         "solid.spacing=0.00125", "coupling.max_substeps=32"]
 # The solid-spacing convergence, water fixed at the case's 2 mm: the mid-line
-# spacing halves twice (the shell's spacing is not tied to its thickness).
-CONVERGENCE = [("ds2", 0.002), ("ds1", 0.001), ("ds05", 0.0005)]
+# spacing halves three times (the shell's spacing is not tied to its thickness).
+CONVERGENCE = [("ds2", 0.002), ("ds1", 0.001), ("ds05", 0.0005), ("ds025", 0.00025)]
 RUNS = [("shell, plate 2 mm", "ds2", SHELL + ["solid.spacing=0.002"]),
         ("shell, plate 1 mm (the case's spacing)", "ds1", SHELL),
         ("shell, plate 0.5 mm", "ds05", SHELL + ["solid.spacing=0.0005"]),
+        ("shell, plate 0.25 mm", "ds025", SHELL + ["solid.spacing=0.00025"]),
         ("shell, plate 1 mm, without its damping", "ds1_undamped",
          SHELL + ["solid.shell_damping=false"]),
         ("shell, SPHinXsys's elastic gate (E 7.8 MPa, nu 0.47, water 2.5 mm, plate 1.25 mm, "
