@@ -30,6 +30,11 @@ EARLIER_WATER = {"dissipation": "delta_sph", "kernel": "cubic_spline", "h_factor
                  "wall_friction": "dissipation", "shifting": "none"}
 
 
+# What a table's label adds to the row of the default water, so that a reader
+# of the table (update_docs.py) finds that row by it.
+DEFAULT_WATER_MARK = " (the default water)"
+
+
 def water(**choices):
     """The --set settings of a water with every choice of its fluid block
     spelled out (proto/case.proto, Fluid), so that a table's row names the

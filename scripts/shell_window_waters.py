@@ -25,6 +25,7 @@ import os
 import numpy as np
 
 import cosph_results as cr
+from pressure_noise import RIEMANN, WENDLAND
 from shell_window_vibration import (coupler_share, cut_off_damping_ratio, rotation_frequency,
                                     stepping)
 
@@ -33,24 +34,21 @@ INTERVALS = [(FROM + k * 0.05, FROM + (k + 1) * 0.05) for k in range(6)]
 # A quiet run: its largest shell speed after FROM at most this many times the
 # synchronised run's (the plate's own swing and the water's noise on it).
 QUIET_FACTOR = 2.0
-RIEMANN = {"dissipation": "riemann"}
-WENDLAND = {"kernel": "wendland_c2", "h_factor": 1.5}
 DEFAULT = cr.water(**RIEMANN, **WENDLAND, wall_friction="normal")
-# (key, the water in words, its settings, riemann: whether it solves the Riemann
-# problem against the plate, mid-line spacings in m)
+# (key, the water in words, its settings, mid-line spacings in m)
 WATERS = [
     ("default", "the default: Riemann, Wendland C2, walls damping along their normal", DEFAULT,
-     True, [0.001, 0.0005]),
+     [0.001, 0.0005]),
     ("default_friction", "the default with the walls' friction", cr.water(**RIEMANN, **WENDLAND),
-     True, [0.0005]),
+     [0.0005]),
     ("riemann_cubic", "Riemann, cubic spline, walls damping along their normal",
-     cr.water(**RIEMANN, wall_friction="normal"), True, [0.0005]),
+     cr.water(**RIEMANN, wall_friction="normal"), [0.0005]),
     ("delta_wendland", "delta-SPH, Wendland C2, walls damping along their normal",
-     cr.water(**WENDLAND, wall_friction="normal"), False, [0.0005]),
+     cr.water(**WENDLAND, wall_friction="normal"), [0.0005]),
     ("earlier_normal", "delta-SPH, cubic spline, walls damping along their normal",
-     cr.water(wall_friction="normal"), False, [0.0005]),
+     cr.water(wall_friction="normal"), [0.0005]),
     ("earlier", "the earlier default: delta-SPH, cubic spline, the walls' friction", cr.water(),
-     False, [0.001, 0.0005]),
+     [0.001, 0.0005]),
 ]
 SYNCHRONISED_SPACING = 0.001
 
@@ -88,7 +86,9 @@ def main():
              " / ".join(f"{v:.2f}" for v in largest_speeds(reference[0])), "", "",
              reference[2]]]
     riemann_bounds = []
-    for key, words, settings, riemann, spacings in WATERS:
+    for key, words, settings, spacings in WATERS:
+        # Whether the water solves the Riemann problem against the plate.
+        riemann = cr.setting(settings, "fluid.dissipation") == RIEMANN["dissipation"]
         for spacing in spacings:
             result = run(key, settings, spacing, 32, args.reuse)
             if result is None:

@@ -33,10 +33,13 @@ def table_rows(name):
     return [dict(zip(cells[0], row)) for row in cells[2:]]
 
 
-def first(rows, match=None):
-    """The first row whose columns start with the texts of MATCH ({column: text}), or None."""
+def first(rows, match=None, marked=None):
+    """The first row whose columns start with the texts of MATCH ({column: text})
+    and, with MARKED ({column: text}), end with those texts, or None."""
     for row in rows:
-        if all(row.get(column, "").startswith(text) for column, text in (match or {}).items()):
+        if all(row.get(column, "").startswith(text) for column, text in (match or {}).items()) \
+                and all(row.get(column, "").endswith(text)
+                        for column, text in (marked or {}).items()):
             return row
     return None
 
@@ -60,18 +63,17 @@ def case_results():
              if row.get("run") == "the case" and row.get("spacing (mm)") == "10"]
 
     # The wall-pressure case's own water (docs/physics.md, "Choice of water"),
-    # as validate_wall_pressure.py labels it, and the earlier default's.
-    default_water = ("Riemann, Wendland C2 kernel, walls damping along their normal only "
-                     "(the default water)")
+    # the row validate_wall_pressure.py marks, and the earlier default's.
+    default_water = {"option": cr.DEFAULT_WATER_MARK}
     earlier_water = "delta-SPH (Marrone et al. 2011), the earlier default"
-    wall = (first(table_rows("wall_pressure"), {"option": default_water, "spacing (mm)": "6"})
-            or first(table_rows("wall_pressure"), {"option": default_water}))
+    wall = (first(table_rows("wall_pressure"), {"spacing (mm)": "6"}, default_water)
+            or first(table_rows("wall_pressure"), marked=default_water))
     buchner = first(table_rows("wall_pressure"), {"option": "Buchner"})
     # The same runs against the converged 2-D solution: the default's load by
     # the floor, and the earlier default's, with the walls' friction.
     two_d = table_rows("wall_pressure_2d_reference")
     corner = "load at 6 mm (t* 3.3-5.2)"
-    default_load = first(two_d, {"option": default_water, "spacing (mm)": "6"})
+    default_load = first(two_d, {"spacing (mm)": "6"}, default_water)
     friction = first(two_d, {"option": earlier_water, "spacing (mm)": "6"})
     de_courcy = first(two_d, {"option": "De Courcy"})
     against_2d = (f"; by the floor {default_load[corner]} rho g H against the converged 2-D "

@@ -189,7 +189,7 @@ def main():
             results[(spacing, key)] = measured
             if measured is None:
                 print(f"{key} at {spacing}: {failure or 'did not reach the record end'}")
-    labels = {key: label + (" (the default water)" if key == DEFAULT_WATER else "")
+    labels = {key: label + (cr.DEFAULT_WATER_MARK if key == DEFAULT_WATER else "")
               for key, label, _ in options}
     rows = []
     for (spacing, key), r in results.items():
@@ -309,7 +309,7 @@ def write_front(args):
                 rms, worst = dam.front_error(series, experiment)
                 mean, noise = dam.sensor_noise(series, "probe1")
                 cpu = sum(cr.logged_cpu_times(out).values()) / end_time
-                rows.append([label + (" (the default water)" if key + suffix == DEFAULT_WATER
+                rows.append([label + (cr.DEFAULT_WATER_MARK if key + suffix == DEFAULT_WATER
                                       else ""), walls, f"{1e3 * spacing:g}", f"{100 * rms:.1f} %",
                              f"{100 * worst:.1f} %", f"{mean:.3f}", f"{noise:.3f}", f"{cpu:.1f}"])
     preamble = (

@@ -72,7 +72,7 @@ int plan(int argc, char** argv) {
   // any process starts.
   const bool separate_cores = fluid && solid && [&] {
     const auto settings = cosph::coupler::read_coupler_settings(case_file);
-    return settings.max_substeps > 1 && !settings.solid_at_fluid_step;
+    return settings.stepping.max_substeps > 1 && !settings.solid_at_fluid_step;
   }();
   std::vector<std::string> programs;
   if (fluid && solid) programs = {"cosph-coupler", "cosph-fluid"};

@@ -30,7 +30,7 @@ int run(int argc, char** argv) {
   cosph::coupling::check_key_files(args.endpoint, settings.keys, /*coupler=*/true);
   settings.out_dir = args.out_dir;
   settings.checkpoints = {sph::run_identity(case_file), args.resume_from};
-  std::cout << "cosph-coupler: sub-stepping: " << settings.stepping_reason << std::endl;
+  std::cout << "cosph-coupler: sub-stepping: " << settings.stepping.reason << std::endl;
   sph::make_output_dir(args.out_dir);
   sph::lock_output_dir(args.out_dir, args.endpoint, sph::command_line(argc, argv));
   sph::install_stop_handlers();

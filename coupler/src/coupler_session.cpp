@@ -250,16 +250,12 @@ class Session {
   // synchronised steps or bound its windows (substep_choice.hpp).
   void take_the_solids_damping_into_account() {
     if (settings_.solid_at_fluid_step) return;
-    const SubstepChoice choice = account_for_the_solids_damping(
-        {settings_.max_substeps, settings_.added_mass_ratio, settings_.stepping_reason,
-         settings_.coupling_stiffness_share},
-        solid_damping_, peers_[kSolid].solver);
-    const bool unchanged =
-        choice.max_substeps == settings_.max_substeps && choice.max_window == settings_.max_window;
+    const SubstepChoice choice =
+        account_for_the_solids_damping(settings_.stepping, solid_damping_, peers_[kSolid].solver);
+    const bool unchanged = choice.max_substeps == settings_.stepping.max_substeps &&
+                           choice.max_window == settings_.stepping.max_window;
     if (unchanged) return;
-    settings_.max_substeps = choice.max_substeps;
-    settings_.max_window = choice.max_window;
-    settings_.stepping_reason = choice.reason;
+    settings_.stepping = choice;
     std::cout << "cosph-coupler: sub-stepping: " << choice.reason << std::endl;
   }
 
@@ -395,7 +391,7 @@ class Session {
         settings_.solid_at_fluid_step
             ? peers_[kFluid].state.proposed_dt()
             : common_step(peers_[kFluid].state.proposed_dt(), peers_[kSolid].state.proposed_dt(),
-                          settings_.max_substeps, settings_.max_window);
+                          settings_.stepping.max_substeps, settings_.stepping.max_window);
     if (!(dt > 0.0) || !std::isfinite(dt))
       fail("a solver proposed a step that is not positive at t = " + std::to_string(t) + " s");
     dt = std::min(dt, end - t);

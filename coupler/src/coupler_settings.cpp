@@ -92,18 +92,14 @@ CouplerSettings read_coupler_settings(const sph::CaseFile& case_file) {
   settings.run = sph::read_run_parameters(case_file);
   settings.timeout_seconds = coupling::coupling_timeout_seconds(case_file);
   settings.cross_phase = read_cross_phase_parameters(case_file);
-  const SubstepChoice substeps = read_substep_choice(case_file);
-  settings.max_substeps = substeps.max_substeps;
-  settings.stepping_reason = substeps.reason;
-  settings.added_mass_ratio = substeps.added_mass_ratio;
-  settings.coupling_stiffness_share = substeps.coupling_stiffness_share;
+  settings.stepping = read_substep_choice(case_file);
   sph::require(coupling.solid_step().empty() || coupling.solid_step() == "own" ||
                    coupling.solid_step() == "fluid",
                case_file, "coupling.solid_step",
                "must be \"own\" (default) or \"fluid\", not \"" + coupling.solid_step() + "\"");
   settings.solid_at_fluid_step = coupling.solid_step() == "fluid";
   if (settings.solid_at_fluid_step)
-    settings.stepping_reason =
+    settings.stepping.reason =
         "the fluid's step, taken whole by the solid (coupling.solid_step \"fluid\")";
   return settings;
 }
