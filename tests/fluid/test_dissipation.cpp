@@ -26,7 +26,7 @@ namespace cosph::fluid {
 namespace {
 
 const std::string kDamBreak = std::string(COSPH_SOURCE_DIR) + "/cases/dam_break.pbtxt";
-// The default water before the Riemann solver's (docs/physics.md, "The default
+// The default water before the Riemann solver's (docs/physics.md, "Choice of
 // water"): delta-SPH, the cubic spline at h = 1.3 dx, the walls' friction.
 const std::vector<std::string> kEarlierWater = {"fluid.dissipation=delta_sph",
                                                 "fluid.kernel=cubic_spline", "fluid.h_factor=1.3",
