@@ -296,15 +296,17 @@ def pressure_noise(t, p, window, scale, t_from=-np.inf, t_to=np.inf, interval=No
     return float(level), float(noise)
 
 
-def write_table(name, header, rows, preamble=""):
-    """docs/results/NAME.md: a markdown table the README includes."""
+def write_table(name, header, rows, preamble="", mode="w"):
+    """docs/results/NAME.md: a markdown table the README includes (mode "a":
+    a further table after those already there)."""
     os.makedirs(RESULTS, exist_ok=True)
-    lines = [preamble.strip(), ""] if preamble else []
+    lines = [""] if mode == "a" else []
+    lines += [preamble.strip(), ""] if preamble else []
     lines.append("| " + " | ".join(header) + " |")
     lines.append("|" + "---|" * len(header))
     lines += ["| " + " | ".join(str(cell) for cell in row) + " |" for row in rows]
     path = os.path.join(RESULTS, name + ".md")
-    with open(path, "w") as f:
+    with open(path, mode) as f:
         f.write("\n".join(lines) + "\n")
     return path
 

@@ -220,6 +220,15 @@ def automatic_choice(out):
     return (found.group(1), float(found.group(2))) if found else None
 
 
+def acceleration_choice(out):
+    """What the coupler did with the wall's acceleration term in a run's log
+    ("taken" or "left out"), or "?"."""
+    log_path = os.path.join(out, "launcher.log")
+    text = open(log_path).read() if os.path.exists(log_path) else ""
+    found = re.search(r"acceleration in its pressure: (taken|left out)", text)
+    return found.group(1) if found else "?"
+
+
 def density_run(out_root, ratio, label, settings):
     """One run of the plate with rho_s = ratio rho_f to t = 0.1 s: its row,
     whether it ran, and the automatic choice its coupler made, if any."""
@@ -231,7 +240,8 @@ def density_run(out_root, ratio, label, settings):
     choice = automatic_choice(out) if label == "automatic" else None
     if label == "automatic" and choice is None:
         raise RuntimeError(f"{out}: the coupler did not say what it chose")
-    shown = f"automatic: {choice[0]} (mu_W = {choice[1]:.3g})" if choice else label
+    shown = (f"automatic: {choice[0]} (mu_W = {choice[1]:.3g}), the wall's acceleration "
+             f"{acceleration_choice(out)}" if choice else label)
     row = [f"{ratio:g}", shown, ("runs to 0.1 s" if not error else
            f"stops at t = {reached:.3g} s: {reason(error)}") + spray_note(out), f"{wall:.0f}"]
     print(row, flush=True)
@@ -370,7 +380,9 @@ def main():
         "trouble is known to start. Multi-rate rows hold at most 64 sub-steps a window; "
         "the automatic rows run the case's default (`coupling.max_substeps: 0`), and "
         "name what the coupler chose and the added-mass ratio of a window mu_W it "
-        "chose by (docs/auto_substeps.md).",
+        "chose by (docs/auto_substeps.md), and whether it took the wall's acceleration "
+        "into the wall pressure (`coupling.wall_acceleration` unset: taken where "
+        "rho_f h_f / (rho_s e) <= 1, docs/physics.md, \"Moving wall\").",
         "",
         table(["rho_s / rho_f", "coupling", "outcome", "wall (s)"], density_table),
         "",

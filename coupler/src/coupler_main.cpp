@@ -31,6 +31,8 @@ int run(int argc, char** argv) {
   settings.out_dir = args.out_dir;
   settings.checkpoints = {sph::run_identity(case_file), args.resume_from};
   std::cout << "cosph-coupler: sub-stepping: " << settings.stepping.reason << std::endl;
+  std::cout << "cosph-coupler: the wall's acceleration in its pressure: "
+            << settings.wall_acceleration.reason << std::endl;
   sph::make_output_dir(args.out_dir);
   sph::lock_output_dir(args.out_dir, args.endpoint, sph::command_line(argc, argv));
   sph::install_stop_handlers();

@@ -10,6 +10,7 @@
 #include "sphcore/checkpoint.hpp"
 #include "sphcore/run_parameters.hpp"
 #include "substep_choice.hpp"
+#include "wall_acceleration_choice.hpp"
 
 namespace cosph::coupler {
 
@@ -23,6 +24,10 @@ struct CouplerSettings {
   // automatic multi-rate choice, from the solid's Hello
   // (account_for_the_solids_damping).
   SubstepChoice stepping{1, -1.0, "", 1.0};
+  // Whether the moving wall's pressure takes the solid's acceleration, and
+  // why (wall_acceleration_choice.hpp); cross_phase.wall_acceleration is its
+  // take.
+  WallAccelerationChoice wall_acceleration;
   // coupling.solid_step = "fluid": the fluid's step, taken whole by the solid
   // too (a stability test that must end in an error).
   bool solid_at_fluid_step = false;

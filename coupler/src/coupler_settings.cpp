@@ -55,7 +55,6 @@ CrossPhaseParameters read_cross_phase_parameters(const sph::CaseFile& case_file)
   CrossPhaseParameters par;
   par.model = name == "stress_sum" ? InterfaceModel::stress_sum : InterfaceModel::moving_wall;
   par.gravity = sph::read_run_parameters(case_file).gravity;
-  par.wall_acceleration = coupling.wall_acceleration();
   const sph::ArtificialViscosityCoefficients phase =
       phase_artificial_viscosity(case_file, par.model);
   par.A = coupling.artificial_viscosity() > 0.0 ? coupling.artificial_viscosity() : phase.A;
@@ -92,6 +91,8 @@ CouplerSettings read_coupler_settings(const sph::CaseFile& case_file) {
   settings.run = sph::read_run_parameters(case_file);
   settings.timeout_seconds = coupling::coupling_timeout_seconds(case_file);
   settings.cross_phase = read_cross_phase_parameters(case_file);
+  settings.wall_acceleration = read_wall_acceleration_choice(case_file);
+  settings.cross_phase.wall_acceleration = settings.wall_acceleration.take;
   settings.stepping = read_substep_choice(case_file);
   sph::require(coupling.solid_step().empty() || coupling.solid_step() == "own" ||
                    coupling.solid_step() == "fluid",

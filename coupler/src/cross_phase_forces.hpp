@@ -49,10 +49,10 @@ enum class InterfaceModel { stress_sum, moving_wall };
 
 struct CrossPhaseParameters {
   InterfaceModel model = InterfaceModel::moving_wall;
-  double A = 0.02;                 // Monaghan artificial viscosity, linear
-  double B = 0.0;                  // and quadratic
-  Vec2 gravity = Vec2::Zero();     // moving_wall: g in the body force g - a_w of P_w
-  bool wall_acceleration = false;  // moving_wall: a_w taken when the solid sends it
+  double A = 0.02;                // Monaghan artificial viscosity, linear
+  double B = 0.0;                 // and quadratic
+  Vec2 gravity = Vec2::Zero();    // moving_wall: g in the body force g - a_w of P_w
+  bool wall_acceleration = true;  // moving_wall: a_w taken when the solid sends it
   // moving_wall: the water's Riemann terms in place of Monaghan's viscosity
   // (fluid.dissipation riemann), with the water's reference density rho0 in
   // their 1 / (rho0 c0); c0 is the sound speed the fluid sends.
