@@ -118,8 +118,9 @@ def main():
          "failure"],
         rows,
         preamble="The moving wall's pressure with the solid's acceleration "
-                 "(coupling.wall_acceleration true) and without it (false, the default: "
-                 "a_w = 0), by `scripts/interface_acceleration.py`: the cases as they are, run "
+                 "(coupling.wall_acceleration true, which both cases take when it is unset, "
+                 "their feedback ratio being 0.55) and without it (false: a_w = 0), by "
+                 "`scripts/interface_acceleration.py`: the cases as they are, run "
                  "alternately on the shared two-core machine. Tip RMS "
                  "against Antoci et al. 2007 as in the elastic plate's table; the force on "
                  "the plate and its noise (RMS about the running mean over 0.1 sqrt(H/g), "
