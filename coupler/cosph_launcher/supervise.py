@@ -289,6 +289,12 @@ class Run:
                 # that as on a Ctrl-C to the launcher.
                 interrupted = all(c.proc.returncode == EXIT_INTERRUPTED for c in failed)
                 self.stop_all(signal.SIGTERM, INT_GRACE_S if interrupted else TERM_GRACE_S)
+                if not interrupted:
+                    # The processes stopped on its account print their own
+                    # lines after the cause's: the last line names the cause.
+                    cause = next(c for c in failed if c.proc.returncode != EXIT_INTERRUPTED)
+                    self.console.error(f"the run stopped because {cause.name} failed "
+                                       f"({cause.describe_exit()}): see its error above")
                 return failed[0].exit_code()
             if exited and first_done is None:
                 first_done = (exited[0], time.monotonic())

@@ -130,12 +130,14 @@ SolidParameters read_solid_parameters(const sph::CaseFile& case_file) {
 
   p.artificial_stress = read_artificial_stress(case_file);
   p.fracture = read_fracture(case_file, p.dx, p.nu);
-  // Failure needs a rule for what a failed particle's reference neighbours
-  // still transmit; until the total-Lagrangian solid has one, it refuses.
-  require(!(p.fracture.enabled && p.model == SolidModel::total_lagrangian), case_file,
+  // Failure needs a rule for what a failed particle's neighbours still
+  // transmit: the total-Lagrangian solid (its reference neighbours) and the
+  // shell (its line's bending) have none yet. Refused here, where
+  // cosph-case reads it too, so the run stops before any process starts.
+  require(!(p.fracture.enabled && p.model != SolidModel::jaumann), case_file,
           "solid.fracture.enabled",
-          "von Mises failure is not implemented for solid.model 'total_lagrangian' (use "
-          "'jaumann', or turn fracture off)");
+          std::string("von Mises failure is not implemented for solid.model '") +
+              model_name(p.model) + "' (use 'jaumann', or turn fracture off)");
 
   if (solid.has_initial_velocity()) {
     const auto& mode = solid.initial_velocity();

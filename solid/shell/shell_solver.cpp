@@ -16,8 +16,6 @@ namespace {
 
 const SolidParameters& checked(const sph::CaseFile& case_file, const SolidParameters& parameters) {
   require_model(case_file, parameters, SolidModel::shell);
-  sph::require(!parameters.fracture.enabled, case_file, "solid.fracture.enabled",
-               "von Mises failure is not implemented for solid.model 'shell'");
   return parameters;
 }
 

@@ -48,6 +48,17 @@ class BadCouplingFields(LaunchesElasticPlate, unittest.TestCase):
                 self.assertEqual(list(self.state.glob("*.pid")), [],
                                  "a process was started before the case was refused")
 
+    def test_fracture_on_a_solid_without_it_is_refused_before_anything_starts(self):
+        for model in ("shell", "total_lagrangian"):
+            with self.subTest(model=model):
+                proc = self.launch(f"solid.model={model}", "solid.fracture.enabled=true",
+                                   "solid.fracture.yield_stress=1e5")
+                self.assertEqual(proc.returncode, 2, proc.stderr)
+                self.assertIn("elastic_plate.pbtxt: solid.fracture.enabled: von Mises failure "
+                              f"is not implemented for solid.model '{model}'", proc.stderr)
+                self.assertEqual(list(self.state.glob("*.pid")), [],
+                                 "a process was started before the case was refused")
+
     def test_a_good_case_starts_all_three(self):
         proc = self.launch("coupling.timeout=5")
         self.assertEqual(proc.returncode, 0, proc.stderr)

@@ -432,6 +432,10 @@ class LauncherTest(unittest.TestCase):
         self.assertEqual(rc, 3)
         self.assertIn("cosph: cosph-solid-jaumann failed (exit code 3): error: solid-jaumann diverged", err)
         self.assertNotIn("cosph-fluid failed", err)   # stopped by us, not a failure
+        # The others' lines on stopping come after the cause's; the last names it again.
+        self.assertEqual(err.strip().splitlines()[-1],
+                         "cosph: the run stopped because cosph-solid-jaumann failed (exit code 3): "
+                         "see its error above")
         self.assert_all_gone(6)   # three fakes and the sleep each one started
 
     def test_killed_by_signal(self):
