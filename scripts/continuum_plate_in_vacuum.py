@@ -12,6 +12,9 @@ runs at 5 particles across (the elastic plate case's spacing, 1 mm) and 10:
   Jaumann, linear velocity gradient (the elastic plate case's),
   Jaumann, quadratic velocity gradient (the oscillating plate case's),
   total-Lagrangian, its default hourglass control.
+Then the Jaumann solid with the quadratic gradient at 10 across on
+SPHinXsys's nearly incompressible rubber (E = 7.8 MPa, nu = 0.47), against
+that rubber's own beam periods.
 Writes docs/results/continuum_plate_in_vacuum.md and, with each run's wall
 and CPU time, docs/results/plate_in_vacuum_continuum_points.json for
 scripts/speed_accuracy.py.
@@ -40,16 +43,36 @@ SOLIDS = [
 ]
 
 
-def plate_settings(across):
-    """The oscillating plate's case reshaped into the Antoci plate."""
+# SPHinXsys's rubber (its elastic gate: docs/validation.md, "The peer on its own
+# scene"): nearly incompressible, where a continuum SPH solid may stiffen.
+PEER_RUBBER = (7.8e6, 0.47)  # E (Pa), nu
+PEER_RUBBER_ACROSS = 10
+
+
+def references(youngs_modulus, poisson_ratio):
+    """(Euler-Bernoulli, Timoshenko) first periods of this plate in plane strain
+    at another modulus and Poisson ratio (validate_shell's, which reads its own)."""
+    kept = shell.E, shell.NU
+    shell.E, shell.NU = youngs_modulus, poisson_ratio
+    try:
+        return shell.euler_bernoulli_period(), shell.timoshenko_period()
+    finally:
+        shell.E, shell.NU = kept
+
+
+def plate_settings(across, youngs_modulus=None, poisson_ratio=None):
+    """The oscillating plate's case reshaped into the Antoci plate (its rubber
+    unless another modulus and Poisson ratio are given)."""
+    youngs_modulus = shell.E if youngs_modulus is None else youngs_modulus
+    poisson_ratio = shell.NU if poisson_ratio is None else poisson_ratio
     dx, half, clamp = shell.T_THICK / across, shell.T_THICK / 2, -shell.T_THICK
     return [f"solid.spacing={dx!r}",
             f"solid.body[0].min.x={clamp!r}", f"solid.body[0].min.y={-half!r}",
             f"solid.body[0].max.x={shell.L!r}", f"solid.body[0].max.y={half!r}",
             f"solid.clamp[0].min.x={clamp!r}", f"solid.clamp[0].min.y={-half!r}",
             f"solid.clamp[0].max.y={half!r}",
-            f"solid.density={shell.RHO!r}", f"solid.youngs_modulus={shell.E!r}",
-            f"solid.poisson_ratio={shell.NU!r}",
+            f"solid.density={shell.RHO!r}", f"solid.youngs_modulus={youngs_modulus!r}",
+            f"solid.poisson_ratio={poisson_ratio!r}",
             f"solid.initial_velocity.tip_speed={TIP_SPEED!r}",
             f"solid.initial_velocity.length={shell.L!r}", f"solid.tip_gauge.x={shell.L!r}",
             f"run.end_time={END_TIME!r}", "run.output_interval=0.0002",
@@ -82,6 +105,18 @@ def main():
                          f"{cpu:.1f}"])
             points.append(shell.period_point(label, f"{across} across", period, T_timoshenko,
                                              wall, cpu))
+    # The Jaumann solid that bends right at nu = 0.4, on the peer's rubber.
+    label, executable, settings = SOLIDS[1]
+    E_peer, nu_peer = PEER_RUBBER
+    T_eb_peer, T_timoshenko_peer = references(E_peer, nu_peer)
+    out = pathlib.Path(args.out) / f"peer_rubber_{PEER_RUBBER_ACROSS}"
+    wall, cpu = run(pathlib.Path(args.bin) / executable,
+                    plate_settings(PEER_RUBBER_ACROSS, E_peer, nu_peer) + settings, out, args.reuse)
+    period, _, _ = shell.tip_period(out / "timeseries.csv", f"{label}, the peer's rubber")
+    rows.append([f"{label}, SPHinXsys's rubber (E {E_peer / 1e6:g} MPa, nu {nu_peer:g})",
+                 PEER_RUBBER_ACROSS, f"{1e3 * shell.T_THICK / PEER_RUBBER_ACROSS:g}",
+                 f"{period:.5f}", f"{100 * (period / T_eb_peer - 1):+.2f} %",
+                 f"{100 * (period / T_timoshenko_peer - 1):+.2f} %", f"{wall:.1f}", f"{cpu:.1f}"])
     preamble = (
         "Written by `scripts/continuum_plate_in_vacuum.py`. The Antoci plate alone, first "
         "bending mode, with the continuum solids (`cases/oscillating_plate.pbtxt` reshaped: "
@@ -92,7 +127,10 @@ def main():
         "approximates: its shear correction (5/6) and its clamp are idealisations, and "
         "their effect may reach the order of the gap between the two references, so errors "
         "below that gap do not rank the solids. The total-Lagrangian solid runs its default "
-        "hourglass control (`solid.hourglass_control`, alpha). Wall and CPU times "
+        "hourglass control (`solid.hourglass_control`, alpha). The last row runs the "
+        f"Jaumann solid on SPHinXsys's rubber (E = {E_peer / 1e6:g} MPa, nu = {nu_peer:g}), "
+        f"against that rubber's own references, T = {T_eb_peer:.5f} s (Euler-Bernoulli) "
+        f"and {T_timoshenko_peer:.5f} s (Timoshenko). Wall and CPU times "
         "are for one thread each on a shared two-core machine; other jobs running at the same "
         "time inflate the wall time more than the CPU time.")
     cr.write_table("continuum_plate_in_vacuum",
