@@ -1,9 +1,11 @@
 #include "shell_line.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "bending_mode.hpp"
 
@@ -13,32 +15,91 @@ double ShellLine::phi0() const {
   return std::atan2(tangent.y(), tangent.x());
 }
 
+namespace {
+
+Vec2 vec(const cosph::config::Vec2& point) {
+  return {point.x(), point.y()};
+}
+
+// The straight plate a rectangle stands for: its centre line along the long
+// side, from the middle of one short side to the other's.
+struct Plate {
+  Vec2 start, end;
+  double thickness;
+};
+
+Plate plate_of_box(const cosph::config::Region& box) {
+  const Vec2 min = vec(box.min()), max = vec(box.max());
+  const double width = max.x() - min.x(), height = max.y() - min.y();
+  const double mid_y = 0.5 * (min.y() + max.y()), mid_x = 0.5 * (min.x() + max.x());
+  if (width >= height) return {{min.x(), mid_y}, {max.x(), mid_y}, height};
+  return {{mid_x, min.y()}, {mid_x, max.y()}, width};
+}
+
+// A polygon of four vertices that is a rectangle, at any angle: its sides
+// may miss square by kRectangleTolerance of the long side, which coordinates
+// typed to four or five digits do.
+constexpr double kRectangleTolerance = 1e-3;
+
+Plate plate_of_rectangle(const sph::CaseFile& case_file, const cosph::config::Region& region) {
+  const std::string field = "solid.body[0].polygon";
+  const auto& points = region.polygon().point();
+  sph::require(points.size() == 4, case_file, field,
+               "the shell model reads a polygon as a plate only when it is a rectangle: 4 "
+               "vertices, got " +
+                   std::to_string(points.size()));
+  const std::array<Vec2, 4> p{vec(points[0]), vec(points[1]), vec(points[2]), vec(points[3])};
+  const Vec2 side_a = p[1] - p[0], side_b = p[2] - p[1];
+  const double longest = std::max(side_a.norm(), side_b.norm());
+  const bool rectangle =
+      (p[2] - p[3] - side_a).norm() <= kRectangleTolerance * longest &&
+      (p[3] - p[0] - side_b).norm() <= kRectangleTolerance * longest &&
+      std::abs(side_a.dot(side_b)) <= kRectangleTolerance * side_a.norm() * side_b.norm();
+  sph::require(rectangle, case_file, field,
+               "the shell model reads a polygon as a plate only when it is a rectangle (opposite "
+               "sides equal and parallel, corners square, to " +
+                   sph::format_number(kRectangleTolerance) + " of the long side)");
+  // The short sides' middles are the line's ends.
+  if (side_a.norm() >= side_b.norm())
+    return {0.5 * (p[3] + p[0]), 0.5 * (p[1] + p[2]), side_b.norm()};
+  return {0.5 * (p[0] + p[1]), 0.5 * (p[2] + p[3]), side_a.norm()};
+}
+
+}  // namespace
+
 ShellLine read_shell_line(const sph::CaseFile& case_file, double dx) {
   const auto& solid = case_file.config.solid();
   sph::require(solid.body_size() == 1, case_file, "solid.body",
-               "the shell model takes exactly one body box (the plate), got " +
+               "the shell model takes exactly one body (the plate), got " +
                    std::to_string(solid.body_size()));
-  const auto& box = solid.body(0);
-  sph::require(box.has_min() && box.has_max() && box.subtract().empty(), case_file, "solid.body[0]",
-               "the shell model takes a box (min and max) without subtract: it reads the box as a "
-               "straight plate");
-  const double width = box.max().x() - box.min().x(), height = box.max().y() - box.min().y();
-  const bool along_x = width >= height;
-  const double length = along_x ? width : height, thickness = along_x ? height : width;
-  sph::require(thickness > 0.0, case_file, "solid.body[0]", "must have max > min");
-  sph::require(thickness * kLeastSlenderness <= length, case_file, "solid.body[0]",
-               "a box " + sph::format_number(width) + " x " + sph::format_number(height) +
-                   " m is not a thin plate: the shell model reads the box as a plate of "
+  const auto& body = solid.body(0);
+  const bool box = body.has_min() && body.has_max();
+  sph::require((box || body.has_polygon()) && body.subtract().empty(), case_file, "solid.body[0]",
+               "the shell model takes a box (min and max) or a rectangle at any angle (a "
+               "polygon of 4 vertices), without subtract: it reads the body as a straight plate");
+  Plate plate = box ? plate_of_box(body) : plate_of_rectangle(case_file, body);
+  const double length = (plate.end - plate.start).norm();
+  sph::require(plate.thickness > 0.0, case_file, "solid.body[0]",
+               "must have a thickness (max > min)");
+  sph::require(plate.thickness * kLeastSlenderness <= length, case_file, "solid.body[0]",
+               "a plate " + sph::format_number(length) + " m long and " +
+                   sph::format_number(plate.thickness) +
+                   " m thick is not a thin plate: the shell model reads the body as a plate of "
                    "thickness its short side, which must be at most 1/" +
                    sph::format_number(kLeastSlenderness) +
                    " of its long side; use solid.model \"jaumann\" or \"total_lagrangian\" "
                    "for a thick body");
+  // Towards +x (towards +y for an upright plate), as the box's line runs.
+  Vec2 tangent = (plate.end - plate.start) / length;
+  if (tangent.x() < 0.0 || (tangent.x() == 0.0 && tangent.y() < 0.0)) {
+    std::swap(plate.start, plate.end);
+    tangent = -tangent;
+  }
   ShellLine line;
-  line.tangent = along_x ? Vec2(1.0, 0.0) : Vec2(0.0, 1.0);
-  line.start = along_x ? Vec2(box.min().x(), 0.5 * (box.min().y() + box.max().y()))
-                       : Vec2(0.5 * (box.min().x() + box.max().x()), box.min().y());
+  line.tangent = tangent;
+  line.start = plate.start;
   line.length = length;
-  line.thickness = thickness;
+  line.thickness = plate.thickness;
   line.count = static_cast<int>(std::max(1L, std::lround(length / dx))) + 1;
   line.ds = length / (line.count - 1);
   return line;
@@ -55,7 +116,7 @@ bool in_a_clamp(const SolidParameters& parameters, const Vec2& x) {
 
 ShellParticles build_shell(const sph::CaseFile& case_file, const SolidParameters& parameters,
                            const ShellLine& line, const ShellSection& section) {
-  sph::require(!parameters.bending_mode || line.tangent.x() > 0.0, case_file,
+  sph::require(!parameters.bending_mode || line.tangent == Vec2(1.0, 0.0), case_file,
                "solid.initial_velocity",
                "the shell starts a bending mode on a horizontal plate only (the mode's speed is "
                "vertical and its shape runs along x)");

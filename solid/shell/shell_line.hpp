@@ -1,8 +1,9 @@
 // How a case's body box becomes a shell, and the shell's reference line.
 //
-// The thin-box rule: the shell model reads its one solid.body box as a plate
-// along the box's long side, of thickness t the short side, when it is
-// slender enough for a beam theory,
+// The thin-box rule: the shell model reads its one solid.body box, or a
+// rectangle at any angle given as a polygon of 4 vertices, as a plate along
+// its long side, of thickness t the short side, when it is slender enough for
+// a beam theory,
 //   t <= length / kLeastSlenderness;
 // any other box is refused (a continuum model suits it). The spacing dx is
 // the mid-line's, not tied to t: the thickness is a property of the section,
@@ -31,7 +32,7 @@ inline constexpr double kLeastSlenderness = 4.0;
 
 struct ShellLine {
   Vec2 start;           // one end of the mid-line
-  Vec2 tangent;         // unit vector along it, +x or +y
+  Vec2 tangent;         // unit vector along it (x >= 0; +y when upright)
   double length;        // m
   double thickness;     // m
   int count;            // particles along
@@ -39,8 +40,8 @@ struct ShellLine {
   double phi0() const;  // reference angle of the tangent
 };
 
-// Throws sph::ConfigError naming solid.body unless the case gives one box
-// that the thin-box rule reads as a shell.
+// Throws sph::ConfigError naming solid.body unless the case gives one box or
+// rectangle that the thin-box rule reads as a shell.
 ShellLine read_shell_line(const sph::CaseFile& case_file, double dx);
 
 // The particles of the line, at rest or with the first bending mode of a

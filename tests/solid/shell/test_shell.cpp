@@ -5,6 +5,8 @@
 // own weight (run.gravity) against Timoshenko's static deflection.
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -415,6 +417,76 @@ TEST(Shell, CantileverUnderALargeEndLoadFollowsTheElastica) {
   const auto [exact_deflection, exact_rotation] = elastica_tip(alpha);
   EXPECT_NEAR(deflection / samples / L / exact_deflection, 1.0, 0.02);
   EXPECT_NEAR(rotation / samples / exact_rotation, 1.0, 0.02);
+}
+
+// The elastica case with its plate, clamp and end load turned by `angle` about
+// the clamp's face, the plate given as a rectangle polygon at that angle and
+// the clamp as another; run to `end`. Returns the free end's displacement and
+// rotation, turned back by -angle.
+std::pair<Vec2, double> turned_cantilever_tip(double angle, double end) {
+  const double L = 0.15, dx = L / 8, half = 0.0025;
+  sph::CaseFile c = sph::load_case(std::string(COSPH_SOURCE_DIR) + "/cases/shell_elastica.pbtxt");
+  auto& solid = *c.config.mutable_solid();
+  solid.set_spacing(dx);
+  const Eigen::Rotation2Dd turn(angle);
+  auto set_rectangle = [&](cosph::config::Region* region, double from, double to) {
+    region->Clear();
+    for (const Vec2& corner :
+         {Vec2(from, -half), Vec2(to, -half), Vec2(to, half), Vec2(from, half)}) {
+      const Vec2 turned = turn * corner;
+      auto* point = region->mutable_polygon()->add_point();
+      point->set_x(turned.x());
+      point->set_y(turned.y());
+    }
+  };
+  set_rectangle(solid.mutable_body(0), -4 * dx, L);
+  // Past the clamp's face by a quarter spacing: a particle on a turned
+  // polygon's edge is inside or not by round-off.
+  set_rectangle(solid.mutable_clamp(0), -4 * dx, 0.25 * dx);
+  const Vec2 load = turn * Vec2(0.0, -10.18);
+  solid.mutable_end_load()->mutable_force()->set_x(load.x());
+  solid.mutable_end_load()->mutable_force()->set_y(load.y());
+  ShellSolver solver(c, read_solid_parameters(c));
+  while (solver.time() < end) solver.step(solver.step_limits().smallest());
+  const ShellParticles& P = solver.particles();
+  // The free end: the line runs towards +x whichever end the clamp holds.
+  const std::size_t tip = P.clamped.front() ? P.size() - 1 : 0;
+  return {turn.inverse() * Vec2(P.x[tip] - P.X[tip]), P.theta[tip]};
+}
+
+// A plate need not lie along an axis: the same cantilever turned by 30 and
+// by 120 degrees (given as rectangles) bends as the axis-aligned one does,
+// turned, to round-off.
+TEST(Shell, ATurnedPlateBendsAsTheAlignedOne) {
+  const double end = 0.4;  // s: the load ramping up, the tip well bent
+  const auto [aligned, aligned_theta] = turned_cantilever_tip(0.0, end);
+  EXPECT_GT(aligned.norm(), 0.01);  // m: the plate has bent
+  for (const double degrees : {30.0, 120.0}) {
+    const auto [turned, turned_theta] =
+        turned_cantilever_tip(degrees * std::numbers::pi / 180, end);
+    EXPECT_LT((turned - aligned).norm(), 1e-6 * aligned.norm()) << degrees << " degrees";
+    EXPECT_NEAR(turned_theta, aligned_theta, 1e-6 * std::abs(aligned_theta)) << degrees;
+  }
+}
+
+// A polygon that is not a rectangle is refused, naming the field.
+TEST(Shell, RefusesAPolygonThatIsNotARectangle) {
+  const std::string path = testing::write_case("shell_skewed", R"(
+run { end_time: 0.1 }
+solid {
+  model: "shell" spacing: 0.001 density: 1000 youngs_modulus: 1e6 poisson_ratio: 0.3
+  body { polygon { point { x: 0 y: 0 } point { x: 0.1 y: 0 } point { x: 0.103 y: 0.005 }
+                   point { x: 0 y: 0.005 } } }
+}
+)");
+  try {
+    solver_of(path);
+    FAIL() << "a trapezium was read as a plate";
+  } catch (const sph::ConfigError& error) {
+    const std::string message = error.what();
+    EXPECT_NE(message.find("solid.body[0].polygon"), std::string::npos) << message;
+    EXPECT_NE(message.find("rectangle"), std::string::npos) << message;
+  }
 }
 
 // The hydrostatic plate's plate alone (cases/hydrostatic_plate.pbtxt: span
