@@ -48,17 +48,6 @@ PEER_RUBBER = (7.8e6, 0.47)  # E (Pa), nu
 PEER_RUBBER_ACROSS = 10
 
 
-def references(youngs_modulus, poisson_ratio):
-    """(Euler-Bernoulli, Timoshenko) first periods of this plate in plane strain
-    at another modulus and Poisson ratio (validate_shell's, which reads its own)."""
-    kept = shell.E, shell.NU
-    shell.E, shell.NU = youngs_modulus, poisson_ratio
-    try:
-        return shell.euler_bernoulli_period(), shell.timoshenko_period()
-    finally:
-        shell.E, shell.NU = kept
-
-
 def plate_settings(across, youngs_modulus=None, poisson_ratio=None):
     """The oscillating plate's case reshaped into the Antoci plate (its rubber
     unless another modulus and Poisson ratio are given)."""
@@ -91,34 +80,37 @@ def main():
     parser.add_argument("--bin", default=str(ROOT / "build" / "bin"))
     args = parser.parse_args()
     T_eb, T_timoshenko = shell.euler_bernoulli_period(), shell.timoshenko_period()
+    E_peer, nu_peer = PEER_RUBBER
+    T_eb_peer, T_timoshenko_peer = shell.beam_periods_of(E_peer, nu_peer)
+
+    def measured(label, executable, settings, across, name, rubber=(None, None),
+                 references=(T_eb, T_timoshenko)):
+        """One run's table row and its period, wall and CPU time."""
+        out = pathlib.Path(args.out) / name
+        wall, cpu = run(pathlib.Path(args.bin) / executable,
+                        plate_settings(across, *rubber) + settings, out, args.reuse)
+        period, _, _ = shell.tip_period(out / "timeseries.csv", f"{label}, {across} across")
+        row = [label, across, f"{1e3 * shell.T_THICK / across:g}", f"{period:.5f}"] + \
+            [f"{100 * (period / T - 1):+.2f} %" for T in references] + \
+            [f"{wall:.1f}", f"{cpu:.1f}"]
+        return row, period, wall, cpu
+
     rows, points = [], []
     for label, executable, settings in SOLIDS:
+        option = settings[-1].split("=")[1]
         for across in ACROSS:
-            out = pathlib.Path(args.out) / f"{settings[-1].split('=')[1]}_{across}"
-            wall, cpu = run(pathlib.Path(args.bin) / executable, plate_settings(across) + settings,
-                            out, args.reuse)
-            period, _, _ = shell.tip_period(out / "timeseries.csv", f"{label}, {across} across")
-            rows.append([label, across, f"{1e3 * shell.T_THICK / across:g}", f"{period:.5f}",
-                         f"{100 * (period / T_eb - 1):+.2f} %",
-                         f"{100 * (period / T_timoshenko - 1):+.2f} %", f"{wall:.1f}",
-                         f"{cpu:.1f}"])
+            row, period, wall, cpu = measured(label, executable, settings, across,
+                                              f"{option}_{across}")
+            rows.append(row)
             points.append(shell.period_point(label, f"{across} across", period, T_timoshenko,
                                              wall, cpu))
     # The same solids on the peer's rubber, at the finer spacing.
-    E_peer, nu_peer = PEER_RUBBER
-    T_eb_peer, T_timoshenko_peer = references(E_peer, nu_peer)
     for label, executable, settings in SOLIDS:
-        out = (pathlib.Path(args.out) /
-               f"peer_rubber_{settings[-1].split('=')[1]}_{PEER_RUBBER_ACROSS}")
-        wall, cpu = run(pathlib.Path(args.bin) / executable,
-                        plate_settings(PEER_RUBBER_ACROSS, E_peer, nu_peer) + settings, out,
-                        args.reuse)
-        period, _, _ = shell.tip_period(out / "timeseries.csv", f"{label}, the peer's rubber")
-        rows.append([f"{label}, SPHinXsys's rubber (E {E_peer / 1e6:g} MPa, nu {nu_peer:g})",
-                     PEER_RUBBER_ACROSS, f"{1e3 * shell.T_THICK / PEER_RUBBER_ACROSS:g}",
-                     f"{period:.5f}", f"{100 * (period / T_eb_peer - 1):+.2f} %",
-                     f"{100 * (period / T_timoshenko_peer - 1):+.2f} %", f"{wall:.1f}",
-                     f"{cpu:.1f}"])
+        option = settings[-1].split("=")[1]
+        rows.append(measured(f"{label}, SPHinXsys's rubber (E {E_peer / 1e6:g} MPa, "
+                             f"nu {nu_peer:g})", executable, settings, PEER_RUBBER_ACROSS,
+                             f"peer_rubber_{option}_{PEER_RUBBER_ACROSS}", PEER_RUBBER,
+                             (T_eb_peer, T_timoshenko_peer))[0])
     preamble = (
         "Written by `scripts/continuum_plate_in_vacuum.py`. The Antoci plate alone, first "
         "bending mode, with the continuum solids (`cases/oscillating_plate.pbtxt` reshaped: "

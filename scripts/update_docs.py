@@ -59,8 +59,9 @@ def case_results():
     khayyer = first(table_rows("elastic_plate"), {"run": "Khayyer"})
     # The same plate bending with its modulus (docs/shell.md): the shell at the
     # case's spacing, and the case's own solid where it bends right.
-    stiff_shell = first(table_rows("shell_coupled"), {"run": "shell, plate 1 mm (the case's"})
-    stiff_continuum = first(table_rows("shell_coupled"), {"run": "Jaumann, quadratic gradient"})
+    coupled_shell = table_rows("shell_coupled")
+    stiff_shell = first(coupled_shell, {"run": "shell, plate 1 mm (the case's"})
+    stiff_continuum = first(coupled_shell, {"run": "Jaumann, quadratic gradient"})
     bending_right = (f"; a plate that bends with its modulus gives {stiff_shell['tip x RMS (mm)']} / "
                      f"{stiff_shell['tip y RMS (mm)']} (the shell; the Jaumann solid at 10 across: "
                      f"{stiff_continuum['tip x RMS (mm)']} / {stiff_continuum['tip y RMS (mm)']}): "

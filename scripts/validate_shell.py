@@ -45,6 +45,21 @@ def euler_bernoulli_period():
     return 2 * math.pi / omega
 
 
+def beam_periods_of(youngs_modulus=None, poisson_ratio=None, length=None, thickness=None,
+                    density=None):
+    """(Euler-Bernoulli, Timoshenko) first periods of a clamped-free plate in plane
+    strain that differs from this one in the quantities given (the rest this
+    plate's)."""
+    global E, NU, L, T_THICK, RHO
+    kept = E, NU, L, T_THICK, RHO
+    E, NU, L, T_THICK, RHO = [kept[k] if value is None else value for k, value in enumerate(
+        (youngs_modulus, poisson_ratio, length, thickness, density))]
+    try:
+        return euler_bernoulli_period(), timoshenko_period()
+    finally:
+        E, NU, L, T_THICK, RHO = kept
+
+
 def timoshenko_period(steps=4000):
     """First period of the clamped-free Timoshenko beam in plane strain.
 

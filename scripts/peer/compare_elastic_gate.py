@@ -97,9 +97,7 @@ def period_of(t, y):
 def beam_periods(youngs_modulus, length):
     """Euler-Bernoulli and Timoshenko first periods of the clamped-free plate in plane
     strain (validate_shell.py's, for this plate)."""
-    validate_shell.L, validate_shell.E, validate_shell.NU = length, youngs_modulus, NU
-    validate_shell.T_THICK, validate_shell.RHO = THICKNESS, RHO
-    return validate_shell.euler_bernoulli_period(), validate_shell.timoshenko_period()
+    return validate_shell.beam_periods_of(youngs_modulus, NU, length, THICKNESS, RHO)
 
 
 def main():

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "bending_mode.hpp"
+#include "sphcore/region_reader.hpp"
 
 namespace cosph::solid::shell {
 
@@ -17,10 +18,6 @@ double ShellLine::phi0() const {
 
 namespace {
 
-Vec2 vec(const cosph::config::Vec2& point) {
-  return {point.x(), point.y()};
-}
-
 // The straight plate a rectangle stands for: its centre line along the long
 // side, from the middle of one short side to the other's.
 struct Plate {
@@ -29,7 +26,7 @@ struct Plate {
 };
 
 Plate plate_of_box(const cosph::config::Region& box) {
-  const Vec2 min = vec(box.min()), max = vec(box.max());
+  const Vec2 min = sph::to_vec2(box.min()), max = sph::to_vec2(box.max());
   const double width = max.x() - min.x(), height = max.y() - min.y();
   const double mid_y = 0.5 * (min.y() + max.y()), mid_x = 0.5 * (min.x() + max.x());
   if (width >= height) return {{min.x(), mid_y}, {max.x(), mid_y}, height};
@@ -48,7 +45,8 @@ Plate plate_of_rectangle(const sph::CaseFile& case_file, const cosph::config::Re
                "the shell model reads a polygon as a plate only when it is a rectangle: 4 "
                "vertices, got " +
                    std::to_string(points.size()));
-  const std::array<Vec2, 4> p{vec(points[0]), vec(points[1]), vec(points[2]), vec(points[3])};
+  const std::array<Vec2, 4> p{sph::to_vec2(points[0]), sph::to_vec2(points[1]),
+                              sph::to_vec2(points[2]), sph::to_vec2(points[3])};
   const Vec2 side_a = p[1] - p[0], side_b = p[2] - p[1];
   const double longest = std::max(side_a.norm(), side_b.norm());
   const bool rectangle =

@@ -10,10 +10,6 @@
 namespace sph {
 namespace {
 
-Vec2 vec(const cosph::config::Vec2& v) {
-  return {v.x(), v.y()};
-}
-
 bool finite(const Vec2& v) {
   return std::isfinite(v.x()) && std::isfinite(v.y());
 }
@@ -76,7 +72,7 @@ Shape read_region(const cosph::config::Region& region, const CaseFile& case_file
                           "circle, polygon_file (use subtract to combine regions)");
   Shape shape = Shape::box(Vec2::Zero(), Vec2::Zero());
   if (box) {
-    const Vec2 lo = vec(region.min()), hi = vec(region.max());
+    const Vec2 lo = to_vec2(region.min()), hi = to_vec2(region.max());
     require(region.has_min() && region.has_max(), case_file, field, "a box needs both min and max");
     require(finite(lo) && finite(hi), case_file, field, "the box's corners must be finite");
     require(hi.x() > lo.x() && hi.y() > lo.y(), case_file, field,
@@ -84,10 +80,10 @@ Shape read_region(const cosph::config::Region& region, const CaseFile& case_file
     shape = Shape::box(lo, hi);
   } else if (region.has_polygon()) {
     std::vector<Vec2> points;
-    for (const auto& point : region.polygon().point()) points.push_back(vec(point));
+    for (const auto& point : region.polygon().point()) points.push_back(to_vec2(point));
     shape = checked_polygon(points, case_file, field + ".polygon", "");
   } else if (region.has_circle()) {
-    const Vec2 centre = vec(region.circle().center());
+    const Vec2 centre = to_vec2(region.circle().center());
     const double radius = region.circle().radius();
     require(finite(centre), case_file, field + ".circle.center", "must be finite");
     require(std::isfinite(radius) && radius > 0.0, case_file, field + ".circle.radius",

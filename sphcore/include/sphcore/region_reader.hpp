@@ -11,6 +11,11 @@
 
 namespace sph {
 
+// A case's point or vector (proto/case.proto Vec2) as the solvers' Vec2.
+inline Vec2 to_vec2(const cosph::config::Vec2& v) {
+  return {v.x(), v.y()};
+}
+
 // The shape of `region`, the case's field `field` (e.g. "fluid.walls[2]").
 // Throws ConfigError for a region with no outline or more than one, a polygon
 // with a defect (polygon_defect), a radius that is not positive, a box whose

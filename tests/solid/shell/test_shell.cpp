@@ -47,6 +47,18 @@ ShellSolver solver_of(const std::string& path) {
   return ShellSolver(case_file, read_solid_parameters(case_file));
 }
 
+// The ConfigError message of building the shell of the case at `path`; a
+// failure of the calling test, and "", if the case is taken.
+std::string refusal_of(const std::string& path, const std::string& what) {
+  try {
+    solver_of(path);
+  } catch (const sph::ConfigError& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << what << " was read as a shell";
+  return "";
+}
+
 TEST(Shell, RefusesABodyThatIsNotThin) {
   const std::string path = testing::write_case("shell_thick", R"(
 run { end_time: 0.1 }
@@ -55,14 +67,9 @@ solid {
   body { min { x: 0 y: 0 } max { x: 0.1 y: 0.03 } }
 }
 )");
-  try {
-    solver_of(path);
-    FAIL() << "a 0.1 x 0.03 m box at spacing 1 mm was read as a shell";
-  } catch (const sph::ConfigError& error) {
-    const std::string message = error.what();
-    EXPECT_NE(message.find("solid.body[0]"), std::string::npos) << message;
-    EXPECT_NE(message.find("not a thin plate"), std::string::npos) << message;
-  }
+  const std::string message = refusal_of(path, "a 0.1 x 0.03 m box at spacing 1 mm");
+  EXPECT_NE(message.find("solid.body[0]"), std::string::npos) << message;
+  EXPECT_NE(message.find("not a thin plate"), std::string::npos) << message;
   // Thin but stubby: thickness more than a quarter of the length.
   const std::string stubby = testing::write_case("shell_stubby", R"(
 run { end_time: 0.1 }
@@ -71,13 +78,8 @@ solid {
   body { min { x: 0 y: 0 } max { x: 0.03 y: 0.01 } }
 }
 )");
-  try {
-    solver_of(stubby);
-    FAIL() << "a 0.03 x 0.01 m box was read as a shell";
-  } catch (const sph::ConfigError& error) {
-    EXPECT_NE(std::string(error.what()).find("not a thin plate"), std::string::npos)
-        << error.what();
-  }
+  const std::string stubby_message = refusal_of(stubby, "a 0.03 x 0.01 m box");
+  EXPECT_NE(stubby_message.find("not a thin plate"), std::string::npos) << stubby_message;
 }
 
 // The spacing is the mid-line's: a 5 mm plate at 0.5 mm, ten spacings across.
@@ -479,14 +481,9 @@ solid {
                    point { x: 0 y: 0.005 } } }
 }
 )");
-  try {
-    solver_of(path);
-    FAIL() << "a trapezium was read as a plate";
-  } catch (const sph::ConfigError& error) {
-    const std::string message = error.what();
-    EXPECT_NE(message.find("solid.body[0].polygon"), std::string::npos) << message;
-    EXPECT_NE(message.find("rectangle"), std::string::npos) << message;
-  }
+  const std::string message = refusal_of(path, "a trapezium");
+  EXPECT_NE(message.find("solid.body[0].polygon"), std::string::npos) << message;
+  EXPECT_NE(message.find("rectangle"), std::string::npos) << message;
 }
 
 // The hydrostatic plate's plate alone (cases/hydrostatic_plate.pbtxt: span
