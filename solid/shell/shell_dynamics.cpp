@@ -45,7 +45,7 @@ void compute_strains(ShellParticles& P, const ShellForceParameters& parameters) 
     const std::size_t i = static_cast<std::size_t>(s.i[k]), j = i + 1;
     s.dx_dS[k] = (P.x[j] - P.x[i]) / s.ds[k];
     s.kappa[k] = (P.theta[j] - P.theta[i]) / s.ds[k];
-    const double phi = parameters.phi0 + 0.5 * (P.theta[i] + P.theta[j]);
+    const double phi = s.phi0[k] + 0.5 * (P.theta[i] + P.theta[j]);
     BeamResultants r = beam_resultants(s.dx_dS[k], phi, s.kappa[k], parameters.section);
     if (parameters.damping.any()) add_damping(P, k, phi, parameters, r);
     s.N[k] = r.N;

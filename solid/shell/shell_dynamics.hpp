@@ -5,7 +5,9 @@
 // particles i and j = i + 1, ds apart, the corrected SPH gradient over the
 // two particles its kernel reaches, and their mean, give
 //   x'_s = (x_j - x_i) / ds,  kappa_s = (theta_j - theta_i) / ds,
-//   phi_s = phi0 + (theta_i + theta_j) / 2,
+//   phi_s = phi0_s + (theta_i + theta_j) / 2,
+// phi0_s the reference angle of the chord from i to j (of the line, when it
+// is straight),
 // and the resultants n_s, M_s follow pointwise. The forces are the exact
 // derivatives of the discrete strain energy U = sum_s ds w_s:
 //   f_i += n_s,  f_j -= n_s,
@@ -31,7 +33,6 @@ namespace cosph::solid::shell {
 
 struct ShellForceParameters {
   ShellSection section;
-  double phi0;           // reference angle of the line's tangent
   ShellDamping damping;  // none: all zero
 };
 

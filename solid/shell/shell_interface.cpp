@@ -15,16 +15,15 @@ Vec2 ShellInterface::face_offset(const ShellSection& section, double phi, int si
   return (0.5 * side * section.thickness) * DirectorFrame::at(phi).d;
 }
 
-void ShellInterface::collect(const ShellParticles& P, const ShellSection& section, double phi0,
-                             double h, double dx, const sph::Region& region,
-                             sph::InterfaceParticles& out) {
+void ShellInterface::collect(const ShellParticles& P, const ShellSection& section, double h,
+                             double dx, const sph::Region& region, sph::InterfaceParticles& out) {
   out.clear();
   sent_.clear();
   const double t = section.thickness, I = t * t * t / 12.0;
   const int n = layers(section, dx);
   const double layer = t / n;
   for (std::size_t i = 0; i < P.size(); ++i) {
-    const DirectorFrame frame = DirectorFrame::at(phi0 + P.theta[i]);
+    const DirectorFrame frame = DirectorFrame::at(P.phi0[i] + P.theta[i]);
     const sph::Mat2 along = frame.t * frame.t.transpose();
     const double mass = P.m[i] / n, volume = P.V[i] * layer;
     for (int k = 0; k < n; ++k) {

@@ -37,8 +37,8 @@ namespace cosph::solid::shell {
 class ShellInterface {
  public:
   // The section's particles inside `region`, on clamped particles too.
-  void collect(const ShellParticles& P, const ShellSection& section, double phi0, double h,
-               double dx, const sph::Region& region, sph::InterfaceParticles& out);
+  void collect(const ShellParticles& P, const ShellSection& section, double h, double dx,
+               const sph::Region& region, sph::InterfaceParticles& out);
 
   // The coupler's accelerations, in the order of the last collect, as linear
   // and angular accelerations of the mid-line particles (external_a,

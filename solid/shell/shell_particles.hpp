@@ -20,7 +20,8 @@ using sph::Vec2;
 // energy of the line between them.
 struct ShellStressPoints {
   std::vector<int> i;                 // the particle before; the one after is i + 1
-  std::vector<double> ds;             // reference length between the two, m
+  std::vector<double> ds;             // reference length between the two (their chord), m
+  std::vector<double> phi0;           // reference angle of the chord
   std::vector<Vec2> dx_dS;            // the mid-line's tangent x'
   std::vector<double> kappa;          // d theta / dS
   std::vector<double> N, Q, M;        // axial force, shear force (N/m), bending moment (N m/m)
@@ -29,9 +30,10 @@ struct ShellStressPoints {
   std::vector<double> strain_energy;  // per unit reference length, J/m^2
 
   std::size_t size() const { return i.size(); }
-  void add(int before, double length) {
+  void add(int before, double length, double angle) {
     i.push_back(before);
     ds.push_back(length);
+    phi0.push_back(angle);
     dx_dS.emplace_back(Vec2::Zero());
     for (auto* field : {&kappa, &N, &Q, &M, &couple, &strain_energy}) field->push_back(0.0);
     n.emplace_back(Vec2::Zero());
@@ -43,6 +45,9 @@ struct ShellParticles {
   std::vector<int> id;
   std::vector<Vec2> X;    // reference position on the mid-line
   std::vector<double> S;  // reference arc length along the line
+  // Reference angle of the section's tangent (the director's is phi0 +
+  // theta): the mean direction of the particle's chords to its neighbours.
+  std::vector<double> phi0;
   std::vector<double> V;  // length of line the particle stands for: ds, ds/2 at the ends
   std::vector<double> m;  // rho t V
   std::vector<double> J;  // rotational inertia rho t^3 / 12 V

@@ -58,7 +58,7 @@ ShellSolver::ShellSolver(const sph::CaseFile& case_file, const SolidParameters& 
     : ParticleSolver(parameters,
                      build_shell(case_file, parameters, line, section_of(line, parameters))),
       line_(line),
-      forces_{section_of(line, parameters), line.phi0(),
+      forces_{section_of(line, parameters),
               parameters.shell_damping
                   ? ShellDamping::of(section_of(line, parameters), parameters.h)
                   : ShellDamping{}},
@@ -123,8 +123,7 @@ void ShellSolver::end_step(double dt) {
 }
 
 void ShellSolver::collect_interface(const sph::Region& region, sph::InterfaceParticles& out) {
-  interface_.collect(particles_, forces_.section, forces_.phi0, parameters_.h, parameters_.dx,
-                     region, out);
+  interface_.collect(particles_, forces_.section, parameters_.h, parameters_.dx, region, out);
 }
 
 void ShellSolver::set_interface_accelerations(const std::vector<Vec2>& accelerations) {
@@ -137,7 +136,7 @@ sph::Region ShellSolver::interaction_bounds() const {
   for (std::size_t i = 0; i < P.size(); ++i)
     for (const int side : {+1, -1})
       bounds.include(P.x[i] +
-                     ShellInterface::face_offset(forces_.section, forces_.phi0 + P.theta[i], side));
+                     ShellInterface::face_offset(forces_.section, P.phi0[i] + P.theta[i], side));
   return bounds;
 }
 

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "sphcore/band.hpp"
+
 namespace sph {
 namespace {
 
@@ -65,11 +67,13 @@ Shape read_region(const cosph::config::Region& region, const CaseFile& case_file
   const bool box = region.has_min() || region.has_max();
   const int outlines = static_cast<int>(box) + static_cast<int>(region.has_polygon()) +
                        static_cast<int>(region.has_circle()) +
-                       static_cast<int>(!region.polygon_file().empty());
+                       static_cast<int>(!region.polygon_file().empty()) +
+                       static_cast<int>(region.has_band());
   require(outlines == 1, case_file, field,
-          outlines == 0 ? "needs an outline: min and max (a box), polygon, circle or polygon_file"
-                        : "has more than one outline: give exactly one of min/max, polygon, "
-                          "circle, polygon_file (use subtract to combine regions)");
+          outlines == 0
+              ? "needs an outline: min and max (a box), polygon, circle, polygon_file or band"
+              : "has more than one outline: give exactly one of min/max, polygon, circle, "
+                "polygon_file, band (use subtract to combine regions)");
   Shape shape = Shape::box(Vec2::Zero(), Vec2::Zero());
   if (box) {
     const Vec2 lo = to_vec2(region.min()), hi = to_vec2(region.max());
@@ -89,6 +93,22 @@ Shape read_region(const cosph::config::Region& region, const CaseFile& case_file
     require(std::isfinite(radius) && radius > 0.0, case_file, field + ".circle.radius",
             "must be positive, got " + format_number(radius) + " m");
     shape = Shape::circle(centre, radius);
+  } else if (region.has_band()) {
+    const std::vector<Vec2> line = band_line(region.band());
+    for (std::size_t k = 0; k < line.size(); ++k)
+      require(finite(line[k]), case_file, field + ".band",
+              "point " + std::to_string(k + 1) + " is not finite");
+    const double thickness = region.band().thickness();
+    if (const auto defect = band_defect(line, thickness))
+      require(false, case_file, field + ".band", *defect);
+    const std::vector<Vec2> outline = band_outline(line, thickness);
+    if (const auto defect = polygon_defect(outline))
+      require(false, case_file, field + ".band",
+              "the line crosses itself or bends more tightly than half the thickness: its "
+              "outline, the line offset by " +
+                  format_number(0.5 * thickness) + " m to either side, is not a simple polygon (" +
+                  *defect + ")");
+    shape = Shape::polygon(outline);
   } else {
     const std::string path = beside_case(case_file, region.polygon_file());
     std::vector<Vec2> points;

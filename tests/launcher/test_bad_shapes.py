@@ -1,7 +1,8 @@
 """Bad regions are refused by the real `cosph-case plan`, before any process
 starts, with one line naming the case file, the field and the reason
 (proto/case.proto Region; docs/scenes.md): a self-intersecting polygon, too
-few points, a radius that is not positive, a missing or malformed outline
+few points, a radius that is not positive, a band bent too sharply for its
+thickness, a missing or malformed outline
 file, water overlapping a wall or a solid body, and a tank that leaks.
 
 COSPH_TEST_BIN is the folder of the built cosph-case (ctest sets it; default
@@ -91,6 +92,23 @@ class BadShapes(unittest.TestCase):
         hole = "subtract { circle { center { x: 0.2 y: 0.05 } radius: -1 } }"
         self.assertRefused(self.plan(water=WATER + " " + hole),
                            "fluid.water[0].subtract[0].circle.radius", "must be positive")
+
+    def test_a_band_bent_too_sharply(self):
+        # Above the water, so that only the band's own outline is at fault.
+        corner = ("band { point { x: 0.1 y: 0.15 } point { x: 0.3 y: 0.15 } "
+                  "point { x: 0.2 y: 0.17 } thickness: 0.01 }")
+        self.assertRefused(self.plan(body=corner), "solid.body[0].band",
+                           "the line turns by 168.69 degrees at point 2: a corner must turn by "
+                           "less than 90")
+        tight = ("band { point { x: 0.1 y: 0.2 } point { x: 0.2 y: 0.2 } "
+                 "point { x: 0.25 y: 0.25 } point { x: 0.25 y: 0.3 } point { x: 0.2 y: 0.35 } "
+                 "point { x: 0.1 y: 0.35 } thickness: 0.18 }")
+        self.assertRefused(self.plan(body=tight), "solid.body[0].band",
+                           "the line crosses itself or bends more tightly than half the "
+                           "thickness: its outline, the line offset by 0.09 m to either side, is "
+                           "not a simple polygon (the polygon intersects itself")
+        # The same line, thin enough for its bends, is accepted.
+        self.assertEqual(self.plan(body=tight.replace("0.18 }", "0.01 }")).returncode, 0)
 
     def test_a_missing_outline_file(self):
         proc = self.plan(walls='walls { polygon_file: "no_such_gate.csv" }')

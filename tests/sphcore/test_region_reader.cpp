@@ -5,6 +5,9 @@
 #include <google/protobuf/text_format.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <numbers>
+
 #include "test_support.hpp"
 
 namespace {
@@ -54,6 +57,37 @@ TEST(RegionReader, EachKindOfOutlineIsRead) {
   EXPECT_TRUE(water.contains(sph::Vec2(0.1, 0.15)));
 }
 
+// A band keeps its thickness through a corner: the line (0, 0)-(1, 0)-(2, 1)
+// turns by 45 degrees at (1, 0), where the outline meets at the mitre,
+// (t / 2) / cos(22.5 deg) from the corner along the mean normal.
+TEST(RegionReader, ABandIsItsLineThickenedEvenly) {
+  ScratchDir dir("regions");
+  const auto kinked = reading(dir.file("gate.pbtxt"),
+                              "band { point { x: 0 y: 0 } point { x: 1 y: 0 }"
+                              " point { x: 2 y: 1 } thickness: 0.1 }");
+  const sph::Shape band = sph::read_region(kinked.region, kinked.case_file, "solid.body[0]");
+  ASSERT_EQ(band.kind(), sph::Shape::Kind::polygon);
+  for (const sph::Vec2& inside : {sph::Vec2(0.5, 0.049), sph::Vec2(0.5, -0.049),
+                                  sph::Vec2(1.5, 0.5), sph::Vec2(1.5 - 0.035, 0.5 + 0.035)})
+    EXPECT_TRUE(band.contains(inside)) << inside.transpose();
+  for (const sph::Vec2& outside : {sph::Vec2(0.5, 0.051), sph::Vec2(0.5, -0.051),
+                                   sph::Vec2(1.5 - 0.036, 0.5 + 0.036), sph::Vec2(2.1, 1.0)})
+    EXPECT_FALSE(band.contains(outside)) << outside.transpose();
+  const double mitre = 0.05 / std::cos(std::numbers::pi / 8);
+  const sph::Vec2 normal(-std::sin(std::numbers::pi / 8), std::cos(std::numbers::pi / 8));
+  for (const double side : {1.0, -1.0}) {
+    EXPECT_TRUE(band.contains(sph::Vec2(1.0, 0.0) + side * 0.999 * mitre * normal)) << side;
+    EXPECT_FALSE(band.contains(sph::Vec2(1.0, 0.0) + side * 1.001 * mitre * normal)) << side;
+  }
+  // Straight, it is the rectangle.
+  const auto straight = reading(dir.file("gate.pbtxt"),
+                                "band { point { x: 0 y: 0 } point { x: 1 y: 0 } thickness: 0.1 }");
+  const sph::Bounds b =
+      sph::read_region(straight.region, straight.case_file, "solid.body[0]").bounds();
+  EXPECT_NEAR((b.min - sph::Vec2(0.0, -0.05)).norm(), 0.0, 1e-15);
+  EXPECT_NEAR((b.max - sph::Vec2(1.0, 0.05)).norm(), 0.0, 1e-15);
+}
+
 TEST(RegionReader, BadOutlinesAreRefusedNamingFileFieldAndReason) {
   ScratchDir dir("regions");
   const std::string case_path = dir.file("tank.pbtxt");
@@ -85,6 +119,22 @@ TEST(RegionReader, BadOutlinesAreRefusedNamingFileFieldAndReason) {
   cosph::testing::write_text(dir.file("bad.csv"), "0,0\n1,0\n1;1\n");
   expect("polygon_file: \"bad.csv\"", "solid.body[0]",
          dir.file("bad.csv") + ":3: expected \"x,y\" in metres, got \"1;1\"");
+  expect("band { point { x: 0 y: 0 } thickness: 0.1 }", "solid.body[0]",
+         "solid.body[0].band: a band needs at least 2 points, got 1");
+  expect("band { point { x: 0 y: 0 } point { x: 1 y: 0 } }", "solid.body[0]",
+         "solid.body[0].band: the thickness must be positive, got 0 m");
+  expect("band { point { x: 0 y: 0 } point { x: 1 y: 0 } point { x: 0.5 y: 0.1 } thickness: 0.01 }",
+         "solid.body[0]", "solid.body[0].band: the line turns by");
+  expect("band { point { x: 0 y: 0 } point { x: 0 y: 0 } point { x: 1 y: 0 } thickness: 0.01 }",
+         "solid.body[0]", "solid.body[0].band: points 1 and 2 coincide");
+  // A bend tighter than half the thickness: the inner side crosses itself.
+  expect(
+      "band { point { x: 0 y: 0 } point { x: 0.1 y: 0 } point { x: 0.15 y: 0.05 }"
+      " point { x: 0.15 y: 0.1 } point { x: 0.1 y: 0.15 } point { x: 0 y: 0.15 } thickness: 0.2 }",
+      "solid.body[0]",
+      "solid.body[0].band: the line crosses itself or bends more tightly than half the "
+      "thickness: its outline, the line offset by 0.1 m to either side, is not a simple polygon "
+      "(the polygon intersects itself");
   cosph::testing::write_text(dir.file("short.csv"), "0,0\n1,0\n");
   expect("polygon_file: \"short.csv\"", "solid.body[0]",
          "solid.body[0].polygon_file: " + dir.file("short.csv") +
