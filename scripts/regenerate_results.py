@@ -51,6 +51,7 @@ STEPS = [
     ("tensile_instability", ["tensile_instability.py"], "accuracy"),
     ("shell", ["validate_shell.py"], "accuracy"),
     ("shell_elastica", ["validate_shell_elastica.py"], "accuracy"),
+    ("shell_curved", ["validate_shell_curved.py"], "accuracy"),
     ("continuum_plate_in_vacuum", ["continuum_plate_in_vacuum.py"], "accuracy"),
     ("elastic_plate", ["validate_elastic_plate.py"], "accuracy"),
     ("plate_force_noise", ["plate_force_noise.py"], "accuracy"),
