@@ -138,14 +138,14 @@ void add_moving_wall(const sph::InterfaceParticles& F, const sph::InterfaceParti
     const Vec2 v_fs = F.v[p.f] - S.v[p.s];
     // The water's own c0 (the sound speed it sends) and density, as against
     // its own walls.
-    const auto Pi = [&](const Vec2& x_fs, const Vec2& v, double rho) {
+    const auto Pi = [&](const Vec2& x_fs, const Vec2& v, double rho, double r) {
       if constexpr (kRiemann)
-        return sph::RiemannLimitedDissipation(F.c[p.f])(x_fs, v, rho);
+        return sph::RiemannLimitedDissipation(F.c[p.f])(x_fs, v, rho, r);
       else
         return sph::artificial_viscosity(x_fs, v, p.h_fs, F.c[p.f], rho, par.A, par.B);
     };
-    const double Pi_fs =
-        fluid::wall_dissipation(Pi, par.wall_friction, p.x_fs, v_fs, n_s[p.s], rho_f);
+    const double Pi_fs = fluid::wall_dissipation(Pi, par.wall_friction, p.x_fs, v_fs, n_s[p.s],
+                                                 rho_f, p.x_fs.norm());
     // The wall particle has the water's density and the solid particle's volume.
     const Vec2 a_f =
         sph::momentum_pair(V_s * rho_f, F.sigma[p.f], -P_w[p.s] * sph::Mat2::Identity(), rho_f,

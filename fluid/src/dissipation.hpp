@@ -54,9 +54,10 @@ class MomentumDissipation {
   MomentumDissipation(double h, double c0, double A, double B)
       : monaghan_(h, c0, A, B), riemann_limited_(c0) {}
 
-  double operator()(const Vec2& x_ij, const Vec2& v_ij, double rho_bar) const {
+  // r = |x_ij|: the neighbour list's, which the Riemann term reads.
+  double operator()(const Vec2& x_ij, const Vec2& v_ij, double rho_bar, double r) const {
     if constexpr (d == Dissipation::riemann)
-      return riemann_limited_(x_ij, v_ij, rho_bar);
+      return riemann_limited_(x_ij, v_ij, rho_bar, r);
     else
       return monaghan_(x_ij, v_ij, rho_bar);
   }
@@ -70,16 +71,16 @@ class MomentumDissipation {
 // the water is n_w, under fluid.wall_friction.
 template <class MomentumPi>
 double wall_dissipation(const MomentumPi& Pi, WallFriction friction, const Vec2& x_ij,
-                        const Vec2& v_ij, const Vec2& n_w, double rho_bar) {
+                        const Vec2& v_ij, const Vec2& n_w, double rho_bar, double r) {
   switch (friction) {
     case WallFriction::none:
       return 0.0;
     case WallFriction::normal:
-      return Pi(x_ij, Vec2(n_w * n_w.dot(v_ij)), rho_bar);
+      return Pi(x_ij, Vec2(n_w * n_w.dot(v_ij)), rho_bar, r);
     case WallFriction::dissipation:
       break;
   }
-  return Pi(x_ij, v_ij, rho_bar);
+  return Pi(x_ij, v_ij, rho_bar, r);
 }
 
 }  // namespace cosph::fluid

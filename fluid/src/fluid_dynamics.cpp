@@ -58,6 +58,7 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
       bool wall_in_reach = false;
       const auto neighbours = pairs.neighbours(i);
       const auto F = pairs.gradient_factors(i);
+      const auto r = pairs.distances(i);
       for (std::size_t k = 0; k < neighbours.size(); ++k) {
         const int j = neighbours[k];
         const Vec2 x_ij = x_i - P.x[j];
@@ -74,7 +75,7 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
               P.is_water(j)
                   ? P.p[j]
                   : sph::riemann_wall_pressure(P.p[i], rho_i, par.run.gravity - P.wall_a[j], x_ij);
-          drho_i += sph::riemann_density_dissipation_pair(rho_i, V_j, P.p[i], P_j, F[k], x_ij,
+          drho_i += sph::riemann_density_dissipation_pair(rho_i, V_j, P.p[i], P_j, F[k], r[k],
                                                           inverse_rho0_c0);
         }
         if (!P.is_water(j)) {
@@ -213,19 +214,20 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
         const Vec2 x_i = x[i], v_i = v[i];
         const double m_i = m[i], rho_i = rho[i], inverse_rho_i = inverse_rho[i];
         const SymmetricStress sigma_i = sigma[i];
-        const auto bracket_times_gradient_of = [&](int j, double F_ij) {
+        const auto bracket_times_gradient_of = [&](int j, double F_ij, double r_ij) {
           const Vec2 x_ij = x_i - x[j], v_ij = v_i - v[j];
           const double rho_ij = 0.5 * (rho_i + rho[j]);
           // The walls' friction's test first: it spares that pair loop a load of kind[j].
           const double Pi_ij =
               wall_friction == WallFriction::dissipation || kind[j] == Kind::water
-                  ? Pi(x_ij, v_ij, rho_ij)
-                  : wall_dissipation(Pi, wall_friction, x_ij, v_ij, wall_n[j], rho_ij);
+                  ? Pi(x_ij, v_ij, rho_ij, r_ij)
+                  : wall_dissipation(Pi, wall_friction, x_ij, v_ij, wall_n[j], rho_ij, r_ij);
           return sph::bracket_times_gradient(sigma_i, sigma[j], inverse_rho_i, inverse_rho[j],
                                              Pi_ij, F_ij * x_ij);
         };
         const auto neighbours = pairs.neighbours(i);
         const auto F = pairs.gradient_factors(i);
+        const auto r = pairs.distances(i);
         const std::size_t later = static_cast<std::size_t>(
             std::upper_bound(neighbours.begin(), neighbours.end(), static_cast<int>(i)) -
             neighbours.begin());
@@ -234,13 +236,13 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
         for (std::size_t k = 0; k < later; ++k) {
           const int j = neighbours[k];
           if (kind[j] == Kind::water) continue;
-          a_i += m[j] * bracket_times_gradient_of(j, F[k]);
+          a_i += m[j] * bracket_times_gradient_of(j, F[k], r[k]);
         }
         // A later wall is sent a share too, which nothing reads: cheaper than
         // telling walls apart here.
         for (std::size_t k = later; k < neighbours.size(); ++k) {
           const int j = neighbours[k];
-          const Vec2 bracket_times_gradient_ij = bracket_times_gradient_of(j, F[k]);
+          const Vec2 bracket_times_gradient_ij = bracket_times_gradient_of(j, F[k], r[k]);
           a_i += m[j] * bracket_times_gradient_ij;
           share(j) -= m_i * bracket_times_gradient_ij;
         }
@@ -269,12 +271,13 @@ std::vector<Vec2> forces_on_walls(const FluidParticles& P, const sph::NeighbourL
       if (!P.is_water(i)) continue;
       const auto neighbours = pairs.neighbours(static_cast<long>(i));
       const auto F = pairs.gradient_factors(static_cast<long>(i));
+      const auto r = pairs.distances(static_cast<long>(i));
       for (std::size_t k = 0; k < neighbours.size(); ++k) {
         const int j = neighbours[k];
         if (P.is_water(j)) continue;
         const Vec2 x_ij = P.x[i] - P.x[j];
         const double Pi_ij = wall_dissipation(Pi_of, par.wall_friction, x_ij, P.v[i] - P.v[j],
-                                              P.wall_n[j], 0.5 * (P.rho[i] + P.rho[j]));
+                                              P.wall_n[j], 0.5 * (P.rho[i] + P.rho[j]), r[k]);
         force[P.wall_of(j)] -= P.m[i] * P.m[j] *
                                sph::bracket_times_gradient(P.sigma[i], P.sigma[j], P.inverse_rho[i],
                                                            P.inverse_rho[j], Pi_ij, F[k] * x_ij);

@@ -2,12 +2,12 @@
 // neighbour pass of that step, and the Verlet list they are found in.
 //
 // NeighbourList stores, for each listed particle i, its neighbours j
-// (r_ij < 2h, j != i) and F_ij = (dW/dr)(r_ij) / r_ij, so that
-// grad_i W_ij = F_ij x_ij: the passes then do no distance tests and no kernel
-// evaluations of their own. It is built from a CandidateList each step. Both
-// list a particle's neighbours in index order (the grid's candidate ranges
-// come row by row, each in order), so a pass that works each pair out once
-// finds i's later neighbours at the end of its list (ordered_shares.hpp).
+// (r_ij < 2h, j != i), F_ij = (dW/dr)(r_ij) / r_ij, so that
+// grad_i W_ij = F_ij x_ij, and r_ij itself: the passes then do no distance
+// tests, no kernel evaluations and no square roots of their own. It is built from a CandidateList
+// each step. Both list a particle's neighbours in index order (the grid's candidate ranges come row
+// by row, each in order), so a pass that works each pair out once finds i's later neighbours at the
+// end of its list (ordered_shares.hpp).
 //
 // CandidateList is a Verlet list (Verlet 1967): the particles within
 // range = 2h + skin, found on the cell grid. While no particle has moved more
@@ -43,14 +43,17 @@ namespace detail {
 template <bool kWithValue>
 struct alignas(64) PairStore {
   std::vector<int> j;
-  std::vector<double> value;
+  std::vector<double> value, distance;
   std::size_t size = 0;
 
   void reserve(std::size_t entries) {
     if (entries <= j.size()) return;
     const std::size_t grown = std::max(entries, 2 * j.size());
     j.resize(grown);
-    if constexpr (kWithValue) value.resize(grown);
+    if constexpr (kWithValue) {
+      value.resize(grown);
+      distance.resize(grown);
+    }
   }
 };
 
@@ -88,6 +91,9 @@ class PerThreadLists {
   }
   std::span<const double> value(long i) const {
     return {stores_[owner_[i]].value.data() + first_[i], static_cast<std::size_t>(count_[i])};
+  }
+  std::span<const double> distance(long i) const {
+    return {stores_[owner_[i]].distance.data() + first_[i], static_cast<std::size_t>(count_[i])};
   }
 
   using Store = PairStore<kWithValue>;
@@ -207,11 +213,15 @@ class NeighbourList {
         const auto c = candidates.candidates(i);
         if (c.empty()) return;
         store.reserve(store.size + c.size());
-        // F holds r^2 until the second loop, which vectorises.
+        // r holds r^2 until the second loop, which vectorises.
         double* const F = store.value.data() + store.size;
+        double* const r = store.distance.data() + store.size;
         const std::size_t count =
-            filter_within(c, x, x[i], support2, store.j.data() + store.size, F);
-        for (std::size_t k = 0; k < count; ++k) F[k] = gradient_factor(std::sqrt(F[k]));
+            filter_within(c, x, x[i], support2, store.j.data() + store.size, r);
+        for (std::size_t k = 0; k < count; ++k) {
+          r[k] = std::sqrt(r[k]);
+          F[k] = gradient_factor(r[k]);
+        }
         store.size += count;
       });
     });
@@ -220,6 +230,9 @@ class NeighbourList {
   std::span<const int> neighbours(long i) const { return lists_.j(i); }
   // F_ij in the order of neighbours(i).
   std::span<const double> gradient_factors(long i) const { return lists_.value(i); }
+  // r_ij = |x_i - x_j| in the order of neighbours(i), as the list found it:
+  // the bits a pass gets from x_ij.norm() of the same positions.
+  std::span<const double> distances(long i) const { return lists_.distance(i); }
 
  private:
   using Store = detail::PairStore<true>;

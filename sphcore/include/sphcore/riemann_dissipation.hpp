@@ -28,9 +28,13 @@ namespace sph {
 // with grad_i W_ij = F_ij x_ij (F_ij = W'(r)/r < 0, e_ij . grad_i W_ij = -F_ij r_ij):
 // density flows from the higher pressure to the lower.
 inline double riemann_density_dissipation_pair(double rho_i, double V_j, double P_i, double P_j,
+                                               double F_ij, double r_ij, double inverse_rho0_c0) {
+  return rho_i * V_j * (P_i - P_j) * inverse_rho0_c0 * F_ij * r_ij;
+}
+inline double riemann_density_dissipation_pair(double rho_i, double V_j, double P_i, double P_j,
                                                double F_ij, const Vec2& x_ij,
                                                double inverse_rho0_c0) {
-  return rho_i * V_j * (P_i - P_j) * inverse_rho0_c0 * F_ij * x_ij.norm();
+  return riemann_density_dissipation_pair(rho_i, V_j, P_i, P_j, F_ij, x_ij.norm(), inverse_rho0_c0);
 }
 
 // The pressure of a wall particle j on the wall's side of water particle i's
@@ -62,7 +66,10 @@ class RiemannLimitedDissipation {
   explicit RiemannLimitedDissipation(double c0) : c0_(c0) {}
 
   double operator()(const Vec2& x_ij, const Vec2& v_ij, double rho_bar) const {
-    const double r = x_ij.norm();
+    return (*this)(x_ij, v_ij, rho_bar, x_ij.norm());
+  }
+  // With r = |x_ij| known.
+  double operator()(const Vec2& x_ij, const Vec2& v_ij, double rho_bar, double r) const {
     const double approach = r > 0.0 ? -v_ij.dot(x_ij) / r : 0.0;  // U_i - U_j
     const double beta = std::min(kLimiter * std::max(approach, 0.0), c0_);
     return beta * approach / rho_bar;
