@@ -4,9 +4,10 @@
 // NeighbourList stores, for each listed particle i, its neighbours j
 // (r_ij < 2h, j != i), F_ij = (dW/dr)(r_ij) / r_ij, so that
 // grad_i W_ij = F_ij x_ij, and r_ij itself: the passes then do no distance
-// tests, no kernel evaluations and no square roots of their own. It is built from a CandidateList
-// each step. Both list a particle's neighbours in index order (the grid's candidate ranges come row
-// by row, each in order), so a pass that works each pair out once finds i's later neighbours at the
+// tests, no kernel evaluations and no square roots of their own. It is
+// built from a CandidateList each step. Both list a particle's neighbours in
+// index order (the grid's candidate ranges come row by row, each in order),
+// so a pass that works each pair out once finds i's later neighbours at the
 // end of its list (ordered_shares.hpp).
 //
 // CandidateList is a Verlet list (Verlet 1967): the particles within
