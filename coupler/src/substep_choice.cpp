@@ -48,13 +48,19 @@ SubstepChoice choose_substeps(const AddedMassInputs& in) {
 double solid_thickness(const sph::CaseFile& case_file) {
   const auto& solid = case_file.config.solid();
   double thinnest = 0.0;
-  for (const sph::Shape& body : sph::read_regions(solid.body(), case_file, "solid.body")) {
-    // Other outlines than a box: found on a lattice of a quarter of the
-    // solid's spacing (of a twentieth of the body's least side without one).
-    const sph::Bounds b = body.bounds();
+  const std::vector<sph::Shape> bodies = sph::read_regions(solid.body(), case_file, "solid.body");
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    const auto& region = solid.body(static_cast<int>(k));
+    // Other outlines than a box and a band: found on a lattice of a quarter
+    // of the solid's spacing (of a twentieth of the body's least side
+    // without one), which reads a band up to twice that too thin.
+    const sph::Bounds b = bodies[k].bounds();
     const double least_side = std::min(b.max.x() - b.min.x(), b.max.y() - b.min.y());
     const double side =
-        sph::thickness(body, solid.spacing() > 0.0 ? 0.25 * solid.spacing() : 0.05 * least_side);
+        region.has_band() && region.subtract().empty()
+            ? region.band().thickness()
+            : sph::thickness(bodies[k],
+                             solid.spacing() > 0.0 ? 0.25 * solid.spacing() : 0.05 * least_side);
     thinnest = thinnest == 0.0 ? side : std::min(thinnest, side);
   }
   return thinnest;

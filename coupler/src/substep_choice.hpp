@@ -111,7 +111,7 @@ SubstepChoice account_for_the_solids_damping(const SubstepChoice& choice,
 // The thinnest of the case's solid.body regions, in m (0 without any): the
 // plate's thickness e, the lightest mass per unit of interface. A region's
 // thickness is the diameter of the largest circle inside it (sph::thickness),
-// a box's its least side.
+// a box's its least side, a band's (without subtract) the thickness it gives.
 double solid_thickness(const sph::CaseFile& case_file);
 
 }  // namespace cosph::coupler

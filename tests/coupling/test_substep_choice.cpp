@@ -200,4 +200,19 @@ TEST(SubstepChoice, ACaseWithoutWhatTheRuleNeedsIsSynchronised) {
   EXPECT_DOUBLE_EQ(cosph::coupler::solid_thickness(elastic_plate_case()), 0.105 - 0.1);
 }
 
+// A band's thickness is the one it gives, not the lattice's reading of its
+// outline (up to two lattice spacings less).
+TEST(SubstepChoice, ABandsThicknessIsTheOneItGives) {
+  sph::CaseFile curved = elastic_plate_case();
+  auto* body = curved.config.mutable_solid()->mutable_body(0);
+  body->Clear();
+  for (const auto& [x, y] : {std::pair{0.1025, 0.16}, {0.1025, 0.079}, {0.11, 0.04}}) {
+    auto* point = body->mutable_band()->add_point();
+    point->set_x(x);
+    point->set_y(y);
+  }
+  body->mutable_band()->set_thickness(0.005);
+  EXPECT_DOUBLE_EQ(cosph::coupler::solid_thickness(curved), 0.005);
+}
+
 }  // namespace
