@@ -42,7 +42,11 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
   P.volume.resize(P.size());
   P.spray.resize(P.size());
   const bool threaded = sph::worth_threads(P.size());
-  sph::parallel_pass(n, threaded, [&](long i) { P.volume[i] = P.m[i] / P.rho[i]; });
+  P.continuity_neighbours.resize(P.size());
+  sph::parallel_pass(n, threaded, [&](long i) {
+    P.volume[i] = P.m[i] / P.rho[i];
+    P.continuity_neighbours[i] = {P.x[i], P.v[i], P.rho[i], P.volume[i], P.p[i]};
+  });
 
   // The dissipation is chosen once for the whole pass, at compile time, so
   // that the pair loop holds only its terms: with a run-time branch there
@@ -59,12 +63,14 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
       const auto neighbours = pairs.neighbours(i);
       const auto F = pairs.gradient_factors(i);
       const auto r = pairs.distances(i);
+      const FluidParticles::ContinuityNeighbour* const hot = P.continuity_neighbours.data();
       for (std::size_t k = 0; k < neighbours.size(); ++k) {
         const int j = neighbours[k];
-        const Vec2 x_ij = x_i - P.x[j];
+        const FluidParticles::ContinuityNeighbour& n_j = hot[j];
+        const Vec2 x_ij = x_i - n_j.x;
         const Vec2 grad_W_ij = F[k] * x_ij;
-        const double rho_j = P.rho[j], V_j = P.volume[j];
-        const Vec2 v_ij = v_i - P.v[j];
+        const double rho_j = n_j.rho, V_j = n_j.V;
+        const Vec2 v_ij = v_i - n_j.v;
         drho_i += sph::continuity_pair(rho_i, V_j, v_ij, grad_W_ij);
         // The Riemann problem is solved against the walls too, the wall's side
         // mirroring i (riemann_wall_pressure): left out, the water by a wall
@@ -73,7 +79,7 @@ void compute_continuity_and_gradients(FluidParticles& P, const sph::NeighbourLis
         if constexpr (dissipation == Dissipation::riemann) {
           const double P_j =
               P.is_water(j)
-                  ? P.p[j]
+                  ? n_j.p
                   : sph::riemann_wall_pressure(P.p[i], rho_i, par.run.gravity - P.wall_a[j], x_ij);
           drho_i += sph::riemann_density_dissipation_pair(rho_i, V_j, P.p[i], P_j, F[k], r[k],
                                                           inverse_rho0_c0);
@@ -175,10 +181,12 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
   const long n = static_cast<long>(P.size());
   P.sigma.resize(P.size());
   P.inverse_rho.resize(P.size());
+  P.momentum_neighbours.resize(P.size());
   const bool threaded = sph::worth_threads(P.size());
   sph::parallel_pass(n, threaded, [&](long i) {
     P.sigma[i] = total_stress(P.p[i], P.tau[i]);
     P.inverse_rho[i] = 1.0 / P.rho[i];
+    P.momentum_neighbours[i] = {P.x[i], P.v[i], P.sigma[i], P.rho[i], P.inverse_rho[i], P.m[i]};
   });
 
   // Each pair of water particles is worked out once, by the lower index, which
@@ -198,10 +206,7 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
       // through Eigen's packet stores, which may alias anything, so read
       // through P, shares and Pi_of they were all loaded again for every pair.
       const Kind* const kind = P.kind.data();
-      const Vec2 *const x = P.x.data(), *const v = P.v.data();
-      const double *const m = P.m.data(), *const rho = P.rho.data(),
-                          *const inverse_rho = P.inverse_rho.data();
-      const SymmetricStress* const sigma = P.sigma.data();
+      const FluidParticles::MomentumNeighbour* const hot = P.momentum_neighbours.data();
       Vec2* const a = P.a.data();
       const auto share = shares.block_shares(b, a);
       const MomentumDissipation<dissipation> Pi = Pi_of;
@@ -211,18 +216,19 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
       for (long i = begin; i < end; ++i) a[i].setZero();
       for (long i = begin; i < end; ++i) {
         if (kind[i] != Kind::water) continue;
-        const Vec2 x_i = x[i], v_i = v[i];
-        const double m_i = m[i], rho_i = rho[i], inverse_rho_i = inverse_rho[i];
-        const SymmetricStress sigma_i = sigma[i];
+        const Vec2 x_i = hot[i].x, v_i = hot[i].v;
+        const double m_i = hot[i].m, rho_i = hot[i].rho, inverse_rho_i = hot[i].inverse_rho;
+        const SymmetricStress sigma_i = hot[i].sigma;
         const auto bracket_times_gradient_of = [&](int j, double F_ij, double r_ij) {
-          const Vec2 x_ij = x_i - x[j], v_ij = v_i - v[j];
-          const double rho_ij = 0.5 * (rho_i + rho[j]);
+          const FluidParticles::MomentumNeighbour& n_j = hot[j];
+          const Vec2 x_ij = x_i - n_j.x, v_ij = v_i - n_j.v;
+          const double rho_ij = 0.5 * (rho_i + n_j.rho);
           // The walls' friction's test first: it spares that pair loop a load of kind[j].
           const double Pi_ij =
               wall_friction == WallFriction::dissipation || kind[j] == Kind::water
                   ? Pi(x_ij, v_ij, rho_ij, r_ij)
                   : wall_dissipation(Pi, wall_friction, x_ij, v_ij, wall_n[j], rho_ij, r_ij);
-          return sph::bracket_times_gradient(sigma_i, sigma[j], inverse_rho_i, inverse_rho[j],
+          return sph::bracket_times_gradient(sigma_i, n_j.sigma, inverse_rho_i, n_j.inverse_rho,
                                              Pi_ij, F_ij * x_ij);
         };
         const auto neighbours = pairs.neighbours(i);
@@ -236,14 +242,14 @@ void compute_accelerations(FluidParticles& P, const sph::NeighbourList& pairs,
         for (std::size_t k = 0; k < later; ++k) {
           const int j = neighbours[k];
           if (kind[j] == Kind::water) continue;
-          a_i += m[j] * bracket_times_gradient_of(j, F[k], r[k]);
+          a_i += hot[j].m * bracket_times_gradient_of(j, F[k], r[k]);
         }
         // A later wall is sent a share too, which nothing reads: cheaper than
         // telling walls apart here.
         for (std::size_t k = later; k < neighbours.size(); ++k) {
           const int j = neighbours[k];
           const Vec2 bracket_times_gradient_ij = bracket_times_gradient_of(j, F[k], r[k]);
-          a_i += m[j] * bracket_times_gradient_ij;
+          a_i += hot[j].m * bracket_times_gradient_ij;
           share(j) -= m_i * bracket_times_gradient_ij;
         }
         a[i] += a_i;

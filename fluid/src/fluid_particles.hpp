@@ -63,6 +63,20 @@ struct FluidParticles {
   // 1 for water on the free surface as particle shifting sees it
   // (DeltaPlusShifting::on_surface).
   std::vector<std::uint8_t> on_surface;
+  // What each pair pass reads of a neighbour j, copied together at the start
+  // of the pass: a pass waits on memory for j's values, and from one record
+  // it loads one or two cache lines a neighbour, not one from each array.
+  struct ContinuityNeighbour {
+    Vec2 x, v;
+    double rho, V, p;  // V = m / rho
+  };
+  std::vector<ContinuityNeighbour> continuity_neighbours;
+  struct MomentumNeighbour {
+    Vec2 x, v;
+    SymmetricStress sigma;
+    double rho, inverse_rho, m;
+  };
+  std::vector<MomentumNeighbour> momentum_neighbours;
   // The momentum pass's shares for later blocks of particles (sph::OrderedShares).
   sph::OrderedShares<Vec2> a_shares{Vec2::Zero()};
 

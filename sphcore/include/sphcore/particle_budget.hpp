@@ -16,8 +16,8 @@ inline constexpr double kDefaultMaxParticles = 5e6;
 
 // Memory of one particle in a solver, all its arrays, neighbour list, cell
 // grid, snapshot copy and the in-memory image of a checkpoint: cosph-fluid's
-// peak resident size grew by 2.40 kB a particle from the dam break at 1 mm
-// spacing (47 822 particles, 118 MB) to 0.5 mm (177 454, 421 MB); rounded up.
+// peak resident size grew by 2.81 KiB a particle from the dam break at 1 mm
+// spacing (50 402 particles, 144 MiB) to 0.5 mm (183 794, 511 MiB); rounded up.
 inline constexpr double kBytesPerParticle = 3072.0;
 
 struct ParticleEstimate {
