@@ -8,7 +8,10 @@ test suite.
 
 usage: /usr/bin/python3 scripts/benchmark.py [--steps N] [--repeat R]
        /usr/bin/python3 scripts/benchmark.py --busy [--repeat R] [--end-time T] [--candidates]
-                                                [--other-build DIR]"""
+                                                [--other-build DIR]
+       /usr/bin/python3 scripts/benchmark.py --busy-long [--repeat R]
+--busy-long: the coupled plate over 0.1 s, quiet and busy, into
+docs/results/busy_machine_long.md."""
 import argparse
 import math
 import os
@@ -36,7 +39,12 @@ def main():
                         help="--busy: also the dam break on DIR, a build with the other "
                              "runtime of the solvers' loops (-DCOSPH_PARALLEL=openmp or tbb), "
                              "whole runs and in cosph-bench (docs/results/parallel_runtimes.md)")
+    parser.add_argument("--busy-long", action="store_true",
+                        help="the coupled plate over 0.1 s, quiet and beside a busy loop")
     args = parser.parse_args()
+    if args.busy_long:
+        print(busy_machine.run_long(args.repeat or 3))
+        return
     if args.busy:
         busy_machine.run(args.repeat or 3, args.end_time, args.candidates, args.other_build)
         return

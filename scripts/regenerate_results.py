@@ -69,6 +69,7 @@ STEPS = [
     ("solid_comparison", ["solid_comparison.py"], "accuracy"),
     ("benchmark", ["benchmark.py"], "timing"),
     ("busy_machine", ["benchmark.py", "--busy", "--candidates"], "timing"),
+    ("busy_machine_long", ["benchmark.py", "--busy-long"], "timing"),
     ("speed_accuracy", ["speed_accuracy.py"], "accuracy"),
 ]
 TIMES = os.path.join(cr.RESULTS, "regenerate_results_times.json")
