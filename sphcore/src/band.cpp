@@ -37,12 +37,18 @@ std::optional<std::string> band_defect(const std::vector<Vec2>& line, double thi
   return std::nullopt;
 }
 
+namespace {
+
+// The unit normal of the line at its point k: its segment's at an end, the
+// mitre's direction (the mean of its two segments' normals) at a corner.
 Vec2 band_normal(const std::vector<Vec2>& line, std::size_t k) {
   if (k == 0) return left_normal(line[0], line[1]);
   const std::size_t last = line.size() - 1;
   if (k == last) return left_normal(line[last - 1], line[last]);
   return (left_normal(line[k - 1], line[k]) + left_normal(line[k], line[k + 1])).normalized();
 }
+
+}  // namespace
 
 std::vector<Vec2> band_outline(const std::vector<Vec2>& line, double thickness) {
   const std::size_t n = line.size();

@@ -29,8 +29,4 @@ std::optional<std::string> band_defect(const std::vector<Vec2>& line, double thi
 // must have no band_defect.
 std::vector<Vec2> band_outline(const std::vector<Vec2>& line, double thickness);
 
-// The unit normal of the line at its point k: its segment's at an end, the
-// mitre's direction (the mean of its two segments' normals) at a corner.
-Vec2 band_normal(const std::vector<Vec2>& line, std::size_t k);
-
 }  // namespace sph

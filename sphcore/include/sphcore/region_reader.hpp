@@ -25,9 +25,10 @@ inline std::vector<Vec2> band_line(const cosph::config::Band& band) {
 
 // The shape of `region`, the case's field `field` (e.g. "fluid.walls[2]").
 // Throws ConfigError for a region with no outline or more than one, a polygon
-// with a defect (polygon_defect), a band with one (band_defect), a radius that is not positive, a
-// box whose max is not above its min, or an outline file that is missing or malformed (its path and
-// line in the message).
+// with a defect (polygon_defect), a band with one (band_defect, or an
+// outline that crosses itself), a radius that is not positive, a box whose
+// max is not above its min, or an outline file that is missing or malformed
+// (its path and line in the message).
 Shape read_region(const cosph::config::Region& region, const CaseFile& case_file,
                   const std::string& field);
 
