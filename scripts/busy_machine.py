@@ -241,8 +241,7 @@ def write(times, cpu, loads, repeat, end_time, other_build=None):
 
 # The coupled plate over a longer run: a 0.02 s run lasts about 1.5 s, of
 # which starting three processes and their first look at the free cores is
-# a large part, and a busy machine slows that part most; 0.1 s is some 12 000
-# steps of the water, which is what a user's run is made of.
+# a part; 0.1 s is some 4 000 windows, what a user's run is made of.
 LONG_END_TIME = 0.1  # s
 LONG_SCENES = [("elastic plate, coupled, multi-rate, 0.1 s", "elastic_plate",
                 ["coupling.max_substeps=32"])]
@@ -268,12 +267,12 @@ def run_long(repeat):
         f"`scripts/benchmark.py --busy-long` ({repeat} rounds, each running every row once in "
         f"turn; the load average before each run was {min(loads):.1f} to {max(loads):.1f}). The "
         f"elastic plate, coupled, multi-rate, over {LONG_END_TIME} s of simulated time rather "
-        "than the table above's 0.02 s: a 0.02 s run lasts about a second and a half, of which "
-        "starting three processes is a large part, and a busy machine slows that part most. "
-        "Rows and ratios as above. Measured: busy at the default thread count "
-        f"{busy:.2f} of quiet one-thread speed (target 0.8); the quiet one-thread run used "
-        f"u = {used:.2f} cores, for which fair sharing would leave at most "
-        f"{fair_share_bound(used):.2f}: pinned, each solver keeps a core of its own.")
+        "than the table above's 0.02 s, whose runs last about a second and a half, of which "
+        "starting three processes is a part. Rows and ratios as above. Measured: busy at the "
+        f"default thread count {busy:.2f} of quiet one-thread speed (target 0.8); the quiet "
+        f"one-thread run used u = {used:.2f} cores, for which fair sharing would leave at most "
+        f"{fair_share_bound(used):.2f} (the table above's preamble); not pinned "
+        f"{statistics.median(ratios(times, scene, LONG_VARIANTS[3][0])):.2f}.")
     return cr.write_table("busy_machine_long", ["run", "wall time (s, median)", "range (s)",
                                                 "quiet one thread / this", "range"], rows,
                           preamble=preamble)
