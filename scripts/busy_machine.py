@@ -241,7 +241,7 @@ def write(times, cpu, loads, repeat, end_time, other_build=None):
 
 # The coupled plate over a longer run: a 0.02 s run lasts about 1.5 s, of
 # which starting three processes and their first look at the free cores is
-# a part; 0.1 s is some 4 000 windows, what a user's run is made of.
+# a part; 0.1 s is some 2 000 coupling windows, what a user's run is made of.
 LONG_END_TIME = 0.1  # s
 LONG_SCENES = [("elastic plate, coupled, multi-rate, 0.1 s", "elastic_plate",
                 ["coupling.max_substeps=32"])]
