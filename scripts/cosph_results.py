@@ -139,6 +139,21 @@ def run_solver(command):
     return result, wall
 
 
+def shell_alone_means(binary, case, settings, out, end, average, columns):
+    """Runs BINARY (cosph-solid-shell) alone on CASE with each FIELD=VALUE of
+    SETTINGS to run.end_time END, into OUT; returns the mean of each of COLUMNS
+    of its timeseries over the last AVERAGE seconds (a settled plate's swing
+    averaged out)."""
+    command = [str(binary), "--case", str(case), "--out", str(out), "--set",
+               f"run.end_time={end!r}"]
+    for s in settings:
+        command += ["--set", s]
+    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
+    series = read_csv(os.path.join(out, "timeseries.csv"))
+    last = series["t"] >= end - average
+    return [float(np.mean(series[column][last])) for column in columns]
+
+
 def children_cpu_seconds():
     """CPU time (user + system, s) of this script's finished child processes
     so far: the difference across one run is that run's CPU time, which other

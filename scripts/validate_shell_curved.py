@@ -26,11 +26,12 @@ usage: scripts/validate_shell_curved.py [--bin DIR]
 import argparse
 import math
 import pathlib
-import subprocess
 import tempfile
 
 import numpy as np
 import matplotlib
+
+import cosph_results as cr
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -94,15 +95,9 @@ def run(binary, n, alpha, out):
     settings = [f"solid.spacing={ds!r}", f"solid.body[0].band.point[0].x={-4 * ds!r}",
                 f"solid.clamp[0].min.x={-5 * ds!r}", f"solid.clamp[0].max.x={0.25 * ds!r}",
                 f"solid.end_load.force.y={-alpha * EI / R**2!r}",
-                f"solid.end_load.ramp_time={RAMP!r}", f"run.end_time={END!r}",
-                "run.snapshot_interval=10"]
-    command = [str(binary), "--case", str(CASE), "--out", str(out)]
-    for s in settings:
-        command += ["--set", s]
-    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
-    data = np.genfromtxt(out / "timeseries.csv", delimiter=",", names=True)
-    last = data["t_s"] >= END - AVERAGE
-    return np.array([np.mean(data["tip_dx_m"][last]), np.mean(data["tip_dy_m"][last])]) / R
+                f"solid.end_load.ramp_time={RAMP!r}", "run.snapshot_interval=10"]
+    return np.array(cr.shell_alone_means(binary, CASE, settings, out, END, AVERAGE,
+                                         ["tip_dx", "tip_dy"])) / R
 
 
 def error(value, exact):
@@ -140,9 +135,7 @@ def main():
     ax.set_xlabel("load alpha = F R^2 / EI")
     ax.set_title("Quarter-circle cantilever under a dead end load")
     ax.legend(fontsize=8)
-    figure = ROOT / "docs" / "figures" / "shell_curved.png"
-    figure.parent.mkdir(parents=True, exist_ok=True)
-    fig.savefig(figure, dpi=120, bbox_inches="tight")
+    fig.savefig(pathlib.Path(cr.FIGURES) / "shell_curved.png", dpi=120, bbox_inches="tight")
 
     text = ["Written by `scripts/validate_shell_curved.py`. A quarter-circle cantilever shell "
             "(`cases/shell_curved.pbtxt`, R / t = 20) under a dead downward end load "
@@ -164,7 +157,7 @@ def main():
                     f"{error(shell, exact):.2f} % | {pair(straight_line)} | "
                     f"{error(straight_line, exact):.1f} % |")
     text.append("")
-    (ROOT / "docs" / "results" / "shell_curved.md").write_text("\n".join(text))
+    (pathlib.Path(cr.RESULTS) / "shell_curved.md").write_text("\n".join(text))
     print("\n".join(text))
 
 

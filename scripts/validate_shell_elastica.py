@@ -21,11 +21,12 @@ usage: scripts/validate_shell_elastica.py [--bin DIR]
 import argparse
 import math
 import pathlib
-import subprocess
 import tempfile
 
 import numpy as np
 import matplotlib
+
+import cosph_results as cr
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -79,17 +80,10 @@ def run(binary, n, alpha, out):
     P = alpha * EI / L**2
     settings = [f"solid.spacing={dx!r}", f"solid.body[0].min.x={-4 * dx!r}",
                 f"solid.clamp[0].min.x={-4 * dx!r}", f"solid.end_load.force.y={-P!r}",
-                f"solid.end_load.ramp_time={RAMP!r}", f"run.end_time={END!r}",
-                "run.snapshot_interval=10"]
-    command = [str(binary), "--case", str(CASE), "--out", str(out)]
-    for s in settings:
-        command += ["--set", s]
-    subprocess.run(command, check=True, stdout=subprocess.DEVNULL)
-    data = np.genfromtxt(out / "timeseries.csv", delimiter=",", names=True)
-    last = data["t_s"] >= END - AVERAGE
-    return (-float(np.mean(data["tip_rotation_rad"][last])),
-            -float(np.mean(data["tip_dy_m"][last])) / L,
-            -float(np.mean(data["tip_dx_m"][last])) / L)
+                f"solid.end_load.ramp_time={RAMP!r}", "run.snapshot_interval=10"]
+    rotation, dy, dx_tip = cr.shell_alone_means(binary, CASE, settings, out, END, AVERAGE,
+                                                ["tip_rotation", "tip_dy", "tip_dx"])
+    return -rotation, -dy / L, -dx_tip / L
 
 
 def percent(value, exact):
