@@ -64,8 +64,15 @@ OPTIONS = [  # (key, label, settings): each water spelled out (cr.water)
 # Timed only: the Wendland C2 kernel at the cubic spline's h, the same
 # support and pairs, to tell the kernel's own cost from that of its larger h
 # (not an option: its still tank reads 2.7 % high, docs/physics.md, "Kernel").
+# And the default water itself: the Riemann row's water with walls damping
+# along their normal only, whose runs validate_wall_pressure.py makes
+# (docs/results/wall_friction_front.md); the rule is on its step.
 COST_ONLY = [("wendland_1.3dx", "Wendland C2 at h = 1.3 dx, the cubic spline's (timed only)",
-              cr.water(kernel="wendland_c2"))]
+              cr.water(kernel="wendland_c2")),
+             ("default_water", "Riemann, Wendland C2 kernel, walls damping along their normal "
+              "(timed only; its runs: docs/results/wall_friction_front.md)"
+              + cr.DEFAULT_WATER_MARK,
+              cr.water(**RIEMANN, **WENDLAND, wall_friction="normal"))]
 SPACINGS = [0.008, 0.004]
 BENCH_STEPS = 400
 # The convergence check: (key of OPTIONS, spacings). The finest spacing for the

@@ -79,6 +79,7 @@ sph::StepLimits FluidSolver::step_limits() const {
         return P.is_water(i) ? std::array{P.v[i].squaredNorm(), P.a[i].squaredNorm()}
                              : std::array{0.0, 0.0};
       });
+  fastest_water_ = std::max(fastest_water_, std::sqrt(v_max2));
   return sph::step_limits(parameters_.run.cfl, parameters_.h, parameters_.c0, std::sqrt(v_max2),
                           std::sqrt(a_max2), parameters_.mu / parameters_.rho0);
 }

@@ -34,6 +34,9 @@ class FluidSolver : public sph::ParticleSolver<FluidSolver, FluidParticles, Flui
 
   // The largest step the fluid allows now.
   sph::StepLimits step_limits() const;
+  // The largest water speed step_limits has seen in this process (a restart
+  // starts it again), m/s.
+  double fastest_water() const { return fastest_water_; }
 
   // A coupled step is split where the coupler's answer is needed:
   // begin_step kicks, drifts and evaluates the water's own forces at the new
@@ -118,6 +121,8 @@ class FluidSolver : public sph::ParticleSolver<FluidSolver, FluidParticles, Flui
   // the wall forces until the next step.
   std::vector<Vec2> wall_forces_before_removal_;
   sph::NeighbourList pairs_;
+  // Kept by step_limits, which finds each step's fastest water anyway.
+  mutable double fastest_water_ = 0.0;
 };
 
 }  // namespace cosph::fluid

@@ -52,6 +52,9 @@ int run_fluid(int argc, char** argv) {
               << " thinned to spray and left the run (timeseries.csv column spray_removed;"
                  " README \"Spray\")"
               << std::endl;
+  if (const std::string note = cosph::fluid::mach_number_note(solver.fastest_water(), parameters);
+      !note.empty())
+    std::cout << "cosph-fluid: note: " << note << std::endl;
   return status;
 }
 

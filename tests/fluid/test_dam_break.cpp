@@ -7,6 +7,7 @@
 // so in the commit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -181,6 +182,38 @@ TEST(DamBreak, WallForcesAddUpToWhatHoldsTheWaterUp) {
   }
   // The surge reaches the right wall at about 0.25 s and pushes it outwards.
   EXPECT_GT(solver.wall_forces()[2].x(), 0.0);
+}
+
+// The surge runs faster than a tenth of the case's sound speed, 10 sqrt(2 g H)
+// = 23.8 m/s, once it strikes the far wall (0.26 s): the solver keeps the
+// fastest water any step saw, and the end-of-run note says Mach is above
+// Monaghan's 0.1 and which sound speed would keep it; with that sound speed
+// the same speed gives no note.
+TEST(DamBreak, TheSurgePassesMachOneTenthAndTheRunSaysSo) {
+  const sph::CaseFile case_file = sph::load_case(kCase, {"run.threads=1"});
+  const FluidParameters parameters = read_fluid_parameters(case_file);
+  FluidSolver solver(case_file, parameters);
+  double fastest_seen = 0.0;
+  while (solver.time() < 0.3) {
+    const double dt = solver.step_limits().smallest();
+    solver.begin_step(dt);
+    solver.end_step(dt);
+    fastest_seen = std::max(fastest_seen, solver.gauges().max_speed);
+  }
+  solver.step_limits();  // sees the last step's end, as the next step would
+  EXPECT_DOUBLE_EQ(solver.fastest_water(), fastest_seen);
+  EXPECT_GT(solver.fastest_water(), 0.1 * parameters.c0);
+
+  const std::string note = mach_number_note(solver.fastest_water(), parameters);
+  EXPECT_NE(note.find("Mach 0."), std::string::npos) << note;
+  const std::string asked = "fluid.sound_speed = ";
+  ASSERT_NE(note.find(asked), std::string::npos) << note;
+  const double wanted_c0 = 10.0 * solver.fastest_water();
+  EXPECT_NEAR(std::stod(note.substr(note.find(asked) + asked.size())), wanted_c0, 0.005 * wanted_c0)
+      << note;
+  FluidParameters faster_sound = parameters;
+  faster_sound.c0 = 1.001 * wanted_c0;
+  EXPECT_EQ(mach_number_note(solver.fastest_water(), faster_sound), "");
 }
 
 // The other tests run on one thread; this one checks that the thread count
