@@ -18,7 +18,7 @@ default water at three sound speeds:
   - 2 x 10 sqrt(2 g H), about ten times the largest speed the runs reach,
     which is Monaghan's own condition (Ma = |u|max / c0 <= 0.1);
 and the same water at h = 2 dx (the quiet option of pressure_noise.py) at
-the code's c0, at 8 and 4 mm, each REALISATIONS times over, and reports the far-wall
+the code's c0, at 8 and 4 mm, each pn.REALISATIONS times over, and reports the far-wall
 sensor's mean and noise, the far wall's force noise, the front's error
 against Martin & Moyce, the largest speed and Mach number, and the cost: a
 step does the same work at any c0 (the same pairs and terms), so the cost
@@ -43,7 +43,7 @@ import validate_dam_break as dam  # noqa: E402
 # The default water spelled out, so that the table names it whatever the
 # code's default becomes (docs/physics.md, "Choice of water").
 DEFAULT_WATER = cr.water(**pn.RIEMANN, **pn.WENDLAND, wall_friction="normal")
-RULE_C0 = 10 * np.sqrt(2 * dam.G * dam.H)  # the code's rule (fluid/src/fluid_parameters.cpp)
+RULE_C0 = pn.RULE_C0
 # The same water at h = 2 dx, the other way to a quiet wall (pressure_noise.py),
 # at the rule's c0: its point on the same chart.
 QUIET_WATER = cr.water(**pn.RIEMANN, **pn.WENDLAND_2DX, wall_friction="normal")
@@ -55,14 +55,9 @@ SOUND_SPEEDS = [  # (key, rule, c0 in m/s, water)
      DEFAULT_WATER),
     ("quiet", "10 sqrt(2 g H), the code's rule; the water at h = 2 dx", RULE_C0, QUIET_WATER),
 ]
-SPACINGS = [0.008, 0.004]
-# A run is one sample of a chaotic flow: the noise over the 0.2 s window moved
-# by half between two runs whose c0 differed in the fourth digit. Each row is
-# REALISATIONS runs whose c0 differs by parts per million, a perturbation
-# at the level of round-off that the flow then amplifies: their median and
-# range.
-REALISATIONS = 4
-PERTURBATION = 1e-6
+SPACINGS = pn.SPACINGS
+# Each row is pn.REALISATIONS runs whose c0 differs by parts per million
+# (pn.realisation): their median and range.
 TARGET = 0.05  # the far-wall noise, rho0 g H
 
 
@@ -117,7 +112,7 @@ def draw(rows, signals, path):
     cost_ax.axhline(TARGET, color="k", ls="--", lw=0.8, label="issue's target")
     cost_ax.set(xlabel="CPU time per simulated second / the default water's",
                 ylabel="far-wall sensor noise / (rho0 g H)",
-                title=f"Dam break: median and range of {REALISATIONS} runs")
+                title=f"Dam break: median and range of {pn.REALISATIONS} runs")
     cost_ax.legend(fontsize=8)
     for k, (label, t, p) in enumerate(signals):
         signal_ax.plot(t, p, lw=0.7, color=f"C{k}", label=label)
@@ -136,13 +131,12 @@ def main():
     for key, _, c0, water in SOUND_SPEEDS:
         for dx in SPACINGS:
             rows[(key, dx)] = []
-            for k in range(REALISATIONS):
-                # The rule's first run leaves c0 to the code (0): the case's own run.
-                sound_speed = (0 if key in ("rule", "quiet") and k == 0
-                               else repr(float(c0 * (1 + k * PERTURBATION))))
+            # The rule's rows leave c0 to the code: the first is the case's own run.
+            given = [] if key in ("rule", "quiet") else [f"fluid.sound_speed={float(c0)!r}"]
+            for k in range(pn.REALISATIONS):
                 series, cpu = run(os.path.join(args.out, f"{key}_dx_{dx:g}_{k}"),
-                                  water + [f"fluid.sound_speed={sound_speed}",
-                                                   f"fluid.spacing={dx}"], args.reuse)
+                                  pn.realisation(water + given + [f"fluid.spacing={dx}"], k),
+                                  args.reuse)
                 rows[(key, dx)].append({**measure(series, cpu, experiment), "c0": c0})
                 print(key, dx, k, rows[(key, dx)][-1], flush=True)
                 if dx == 0.004 and k == 0 and key != "quiet":
@@ -180,7 +174,7 @@ def main():
                  "Wendland C2 at h = 1.5 dx, walls damping along their normal) at three "
                  "artificial sound speeds c0 (H = 0.288 m), and the same water at h = 2 dx, "
                  "the quiet option of the pressure noise table, at the code's c0; each row the median of "
-                 f"{REALISATIONS} runs whose c0 differs by parts per million (a run is one "
+                 f"{pn.REALISATIONS} runs whose c0 differs by parts per million (a run is one "
                  "sample of a chaotic flow): the largest particle speed and its Mach number "
                  "|u|max / c0; the far-wall sensor after the impact "
                  f"(t = {dam.AFTER_IMPACT[0]:g}-{dam.AFTER_IMPACT[1]:g} s), its mean and noise "
