@@ -53,9 +53,8 @@ std::string kernel_resolution_warning(const FluidParameters& p);
 // A note for the end of a run, or "": the fastest water moved faster than a
 // tenth of the sound speed. Weakly compressible water stands for
 // incompressible water only while the Mach number stays below about 0.1
-// (Monaghan 1994): its density varies by about Mach^2, and on the dam break
-// a faster sound made the wall pressure quieter (docs/validation.md, "The
-// sound speed").
+// (Monaghan 1994): its density varies by about Mach^2. What a faster sound
+// changes on the dam break: docs/validation.md, "The sound speed".
 std::string mach_number_note(double fastest_water, const FluidParameters& p);
 
 // Throws sph::ConfigError naming the file, field and reason for bad input.
