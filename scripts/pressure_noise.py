@@ -4,8 +4,10 @@
 For each option of fluid.dissipation, fluid.kernel and fluid.shifting (and the
 combinations in OPTIONS), the dam break (cases/dam_break.pbtxt, to its end
 time) at 8 mm, at 4 mm too for the options quieter at 8 mm than delta-SPH
-(the cheap run sorts the candidates), and the still tank (the tank filled to
-H, 8 mm):
+(the cheap run sorts the candidates), each REALISATIONS times with sound
+speeds differing by parts per million (a run is one sample of a chaotic
+flow: the medians, and the noise's range), and the still tank (the tank
+filled to H, 8 mm):
   - the far-wall sensor's (probe1) mean and noise after the impact, and the
     floor sensor's (probe0), as validate_dam_break.py measures them: over
     t = 0.35-0.55 s, the noise being the RMS about the running mean over

@@ -55,9 +55,9 @@ SOUND_SPEEDS = [  # (key, rule, c0 in m/s, water)
      DEFAULT_WATER),
     ("quiet", "10 sqrt(2 g H), the code's rule; the water at h = 2 dx", RULE_C0, QUIET_WATER),
 ]
-SPACINGS = pn.SPACINGS
 # Each row is pn.REALISATIONS runs whose c0 differs by parts per million
 # (pn.realisation): their median and range.
+SPACINGS = pn.SPACINGS
 TARGET = 0.05  # the far-wall noise, rho0 g H
 
 
@@ -149,9 +149,10 @@ def main():
             samples, base = rows[(key, dx)], rows[("rule", dx)]
             noise = [r["far_wall"][1] for r in samples]
             steps = median(samples, lambda r: r["steps_per_s"])
-            cpu = (f"{median(samples, lambda r: r['cpu_per_s']):.1f} "
-                   f"({median(samples, lambda r: r['cpu_per_s']) / median(base, lambda r: r['cpu_per_s']):.2f})"
-                   if all(r["cpu_per_s"] for r in samples + base) else "")
+            cpu = ""
+            if all(r["cpu_per_s"] for r in samples + base):
+                cpu_per_s = median(samples, lambda r: r["cpu_per_s"])
+                cpu = f"{cpu_per_s:.1f} ({cpu_per_s / median(base, lambda r: r['cpu_per_s']):.2f})"
             fastest = median(samples, lambda r: r["fastest"])
             table.append([rule + (cr.DEFAULT_WATER_MARK if key == "rule" else ""),
                           f"{c0:.1f}", f"{dx * 1e3:g}", f"{fastest:.2f} ({fastest / c0:.2f})",
@@ -173,16 +174,17 @@ def main():
         preamble="The dam break (`cases/dam_break.pbtxt`) with the default water (Riemann, "
                  "Wendland C2 at h = 1.5 dx, walls damping along their normal) at three "
                  "artificial sound speeds c0 (H = 0.288 m), and the same water at h = 2 dx, "
-                 "the quiet option of the pressure noise table, at the code's c0; each row the median of "
-                 f"{pn.REALISATIONS} runs whose c0 differs by parts per million (a run is one "
-                 "sample of a chaotic flow): the largest particle speed and its Mach number "
-                 "|u|max / c0; the far-wall sensor after the impact "
+                 "the quiet option of the pressure noise table, at the code's c0; each row "
+                 f"the median of {pn.REALISATIONS} runs whose c0 differs by parts per million "
+                 "(a run is one sample of a chaotic flow): the largest particle speed and its "
+                 "Mach number |u|max / c0; the far-wall sensor after the impact "
                  f"(t = {dam.AFTER_IMPACT[0]:g}-{dam.AFTER_IMPACT[1]:g} s), its mean and noise "
                  "(RMS about the running mean over 0.1 sqrt(H/g); median and range of the "
                  "runs) over rho0 g H, and the far wall's force noise over rho0 g H^2; the "
                  "front's RMS relative error against Martin & Moyce (T <= 3.1); and the cost "
-                 "(a step's work does not change with c0, but does with h): steps per simulated second "
-                 "(from the runs' dt) and the runs' CPU time per simulated second, on the "
+                 "(a step's work does not change with c0, but does with h): steps per "
+                 "simulated second (from the runs' dt) and the runs' CPU time per simulated "
+                 "second, on the "
                  "shared machine. Produced by `scripts/sound_speed_noise.py`.")
     print(open(path).read())
     print("wrote", figure)
