@@ -62,19 +62,9 @@ TARGET = 0.05  # the issue's far-wall noise, rho0 g H
 
 
 def run(out, settings, reuse):
-    """(timeseries, CPU seconds of the run or None when reused without a record)."""
-    series_path = os.path.join(out, "timeseries.csv")
-    cpu_path = os.path.join(out, "cpu_time.txt")
-    if not (reuse and os.path.exists(series_path)):
-        before = cr.children_cpu_seconds()
-        cr.run_case("dam_break", out, settings + [f"run.output_interval={dam.OUTPUT_INTERVAL}"])
-        with open(cpu_path, "w") as record:
-            record.write(f"{cr.children_cpu_seconds() - before}\n")
-    cpu = None
-    if os.path.exists(cpu_path):
-        with open(cpu_path) as record:
-            cpu = float(record.read())
-    return cr.read_csv(series_path), cpu
+    """(timeseries, CPU seconds of the run's processes as the launcher logged them)."""
+    series = pn.run(out, settings, reuse)
+    return series, sum(cr.logged_cpu_times(out).values()) or None
 
 
 def measure(series, cpu, experiment):

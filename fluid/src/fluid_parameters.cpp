@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
 #include <string>
 
 #include "sphcore/region_reader.hpp"
@@ -59,28 +57,17 @@ std::string kernel_resolution_warning(const FluidParameters& p) {
          format_number(wendland_h_factor) + " (docs/physics.md, \"Kernel\")";
 }
 
-namespace {
-
-// A number for a sentence: three significant digits.
-std::string three_digits(double value) {
-  std::ostringstream text;
-  text << std::setprecision(3) << value;
-  return text.str();
-}
-
-}  // namespace
-
 std::string mach_number_note(double fastest_water, const FluidParameters& p) {
   constexpr double kLargestMach = 0.1;
   const double mach = fastest_water / p.c0;
   if (!(mach > kLargestMach)) return "";
   const double wanted_c0 = fastest_water / kLargestMach;
-  return "the fastest water moved at " + three_digits(fastest_water) + " m/s, Mach " +
-         three_digits(mach) + " against c0 = " + three_digits(p.c0) +
+  return "the fastest water moved at " + format_number(fastest_water, 3) + " m/s, Mach " +
+         format_number(mach, 3) + " against c0 = " + format_number(p.c0, 3) +
          " m/s: weakly compressible water stands for incompressible water while Mach stays "
          "below about 0.1 (Monaghan 1994), its density varying by about Mach^2. "
          "fluid.sound_speed = " +
-         three_digits(wanted_c0) + " m/s keeps 0.1, at " + three_digits(wanted_c0 / p.c0) +
+         format_number(wanted_c0, 3) + " m/s keeps 0.1, at " + format_number(wanted_c0 / p.c0, 3) +
          " times the steps (docs/validation.md, \"The sound speed\")";
 }
 

@@ -189,9 +189,9 @@ void require(bool ok, const CaseFile& case_file, const std::string& field,
   if (!ok) throw ConfigError(case_file.path + ": " + field + ": " + reason);
 }
 
-std::string format_number(double value) {
+std::string format_number(double value, int significant_digits) {
   std::ostringstream out;
-  out.precision(6);
+  out.precision(significant_digits);
   out << value;
   return out.str();
 }

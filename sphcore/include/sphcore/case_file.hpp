@@ -39,7 +39,8 @@ void require_finite(const CaseFile& case_file);
 void require(bool ok, const CaseFile& case_file, const std::string& field,
              const std::string& reason);
 
-// "0.004" with the shortest exact-enough formatting, for error messages.
-std::string format_number(double value);
+// "0.004" with the shortest exact-enough formatting, for error messages; a
+// sentence's number takes fewer significant digits.
+std::string format_number(double value, int significant_digits = 6);
 
 }  // namespace sph
