@@ -135,11 +135,11 @@ def far_wall_force_noise(series):
                              dam.RHO0_G_H * dam.H, *dam.AFTER_IMPACT)
 
 
-def bench_ms_per_step(settings, spacing):
+def bench_ms_per_step(settings, spacing, steps=BENCH_STEPS):
     """(ms per step of the fluid alone, one thread, the thread's CPU time;
     the pairs a step visits at the end)."""
     command = [os.path.join(cr.REPO, "build", "bin", "cosph-bench"), "--fluid", "--cpu",
-               "--threads", "1", "--spacing", str(spacing), "--steps", str(BENCH_STEPS)]
+               "--threads", "1", "--spacing", str(spacing), "--steps", str(steps)]
     for setting in settings:
         command += ["--set", setting]
     output = subprocess.run(command, check=True, stdout=subprocess.PIPE, text=True).stdout
