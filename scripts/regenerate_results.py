@@ -43,6 +43,7 @@ STEPS = [
     ("pressure_noise", ["pressure_noise.py", "--repeats", "9"], "accuracy"),
     ("sound_speed_noise", ["sound_speed_noise.py"], "accuracy"),
     ("smoothing_length_noise", ["smoothing_length_noise.py"], "accuracy"),
+    ("shifting_density", ["shifting_density.py"], "accuracy"),
     ("sensor_convergence", ["pressure_noise.py", "--convergence"], "accuracy"),
     ("sensor_support", ["sensor_support.py"], "accuracy"),
     ("far_wall_profile", ["far_wall_profile.py"], "accuracy"),
