@@ -41,7 +41,7 @@ Resolution read_resolution(const CaseFile& case_file, const std::string& block, 
           "must be positive, got " + format_number(spacing) + " m");
   const double factor = h_factor > 0.0 ? h_factor : 1.3;
   require(factor >= 1.0 && factor <= 2.0, case_file, block + ".h_factor",
-          "must lie in [1, 2] (usually 1.2 to 1.5), got " + format_number(h_factor));
+          "must lie in [1, 2] (the shipped cases use 1.3 to 2), got " + format_number(h_factor));
   return {spacing, factor * spacing};
 }
 

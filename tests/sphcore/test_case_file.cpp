@@ -175,8 +175,9 @@ TEST(Resolution, BadSpacingOrFactorNamesTheBlocksField) {
   const sph::CaseFile c = sph::load_case(kDamBreak);
   EXPECT_EQ(config_error([&] { sph::read_resolution(c, "solid", 0.0, 1.3); }),
             kDamBreak + ": solid.spacing: must be positive, got 0 m");
-  EXPECT_EQ(config_error([&] { sph::read_resolution(c, "fluid", 0.01, 2.5); }),
-            kDamBreak + ": fluid.h_factor: must lie in [1, 2] (usually 1.2 to 1.5), got 2.5");
+  EXPECT_EQ(
+      config_error([&] { sph::read_resolution(c, "fluid", 0.01, 2.5); }),
+      kDamBreak + ": fluid.h_factor: must lie in [1, 2] (the shipped cases use 1.3 to 2), got 2.5");
   EXPECT_NE(config_error([&] { sph::read_resolution(c, "fluid", 0.01, 0.5); }).find("h_factor"),
             std::string::npos);
 }
