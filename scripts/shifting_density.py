@@ -31,8 +31,8 @@ import h5py
 import numpy as np
 
 import cosph_results as cr
-import pressure_noise as pn
 import sensor_support as ss
+import sound_speed_noise as ssn
 import validate_dam_break as dam
 
 SPACING = 0.008  # m
@@ -44,14 +44,13 @@ CORNER = (0.04, 0.03)  # m: from the far wall, above the floor
 RHO0 = 1000.0  # kg/m^3
 # The kernels' 2-D normalisations, times sensor_support.kernel_weight's shapes.
 NORMALISATION = {"cubic_spline": 10 / (7 * np.pi), "wendland_c2": 7 / (4 * np.pi)}
-DEFAULT_WATER = cr.water(**pn.RIEMANN, **pn.WENDLAND, wall_friction="normal")
 WATERS = [  # (label, settings, kernel, h / dx)
     ("delta-SPH (Marrone et al. 2011), the earlier default", cr.water(), "cubic_spline", 1.3),
     ("delta-plus-SPH: the same and shifting (Sun et al. 2017)", cr.water(shifting="delta_plus"),
      "cubic_spline", 1.3),
     ("Riemann, Wendland C2, walls damping along their normal" + cr.DEFAULT_WATER_MARK,
-     DEFAULT_WATER, "wendland_c2", 1.5),
-    ("the same and delta-plus shifting", DEFAULT_WATER + ["fluid.shifting=delta_plus"],
+     ssn.DEFAULT_WATER, "wendland_c2", 1.5),
+    ("the same and delta-plus shifting", ssn.DEFAULT_WATER + ["fluid.shifting=delta_plus"],
      "wendland_c2", 1.5),
 ]
 
@@ -90,7 +89,7 @@ def main():
                 t = snapshot.attrs["time"]
             if WINDOW[0] - 1e-9 <= t <= WINDOW[1] + 1e-9:
                 states.append(corner_state(path, kernel, h_factor * SPACING))
-        count, rho, ratio, lowest, pressure = (np.mean([s[n] for s in states]) for n in range(5))
+        count, rho, ratio, pressure = (np.mean([s[n] for s in states]) for n in (0, 1, 2, 4))
         lowest = min(s[3] for s in states)
         table.append([label, f"{count:.1f}", f"{rho:.1f}", f"{ratio:.3f} ({lowest:.3f})",
                       f"{pressure / dam.RHO0_G_H:.2f}"])

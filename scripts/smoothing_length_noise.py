@@ -17,9 +17,10 @@ chaotic flow), and reports
   - the front's RMS relative error against Martin & Moyce (T <= 3.1);
   - the cost of a step of the fluid alone (build/bin/cosph-bench, one
     thread, CPU time) against delta-SPH's, the default when the issue was
-    filed, the two alternating REPEATS times (pn.costs' way), with the pairs
-    a step visits; and the steps per simulated second the runs took (dt
-    grows with h), whose product is the cost per simulated second.
+    filed: REPEATS rounds, each timing delta-SPH and then every h, the best
+    of the rounds and the median of the rounds' ratios, with the pairs a
+    step visits; and the steps per simulated second the runs took (dt grows
+    with h), which with the step's cost give the cost per simulated second.
 Writes docs/results/smoothing_length_noise.md and
 docs/figures/smoothing_length_noise.png.
 
