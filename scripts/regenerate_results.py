@@ -66,7 +66,7 @@ STEPS = [
     ("shell_clamp_contact_line", ["shell_clamp_contact_line.py"], "accuracy"),
     ("hydrostatic_plate", ["validate_hydrostatic_plate.py"], "accuracy"),
     ("plate_fracture", ["validate_plate_fracture.py"], "accuracy"),
-    ("wave_flume", ["validate_wave_flume.py"], "accuracy"),
+    ("wave_flume", ["validate_wave_flume.py", "--previous"], "accuracy"),
     ("wave_flume_points", ["validate_wave_flume.py", "--points"], "accuracy"),
     ("stability_map", ["stability_map.py"], "accuracy"),
     ("solid_comparison", ["solid_comparison.py"], "accuracy"),
