@@ -55,14 +55,13 @@ WATERS = [  # (label, settings, kernel, h / dx)
 ]
 
 
-def corner_state(path, kernel, h):
+def corner_state(snapshot, kernel, h):
     """(water particles in the corner, their mean continuity density, mean and
     lowest ratio of the arrangement's density to it, mean pressure in Pa) in
-    one snapshot."""
-    with h5py.File(path, "r") as snapshot:
-        x = snapshot["position"][:, :2]
-        rho, p = snapshot["density"][:], snapshot["pressure"][:]
-        water = snapshot["kind"][:] == ss.WATER
+    one snapshot, an open h5py file."""
+    x = snapshot["position"][:, :2]
+    rho, p = snapshot["density"][:], snapshot["pressure"][:]
+    water = snapshot["kind"][:] == ss.WATER
     corner = np.nonzero(water & (x[:, 0] > FAR_WALL - CORNER[0]) & (x[:, 1] < CORNER[1]))[0]
     mass = RHO0 * SPACING ** 2  # every particle, water or wall, fills dx^2 at rho0
     ratios = []
@@ -86,9 +85,8 @@ def main():
         states = []
         for path in sorted(glob.glob(os.path.join(out, "fluid_[0-9]*.h5"))):
             with h5py.File(path, "r") as snapshot:
-                t = snapshot.attrs["time"]
-            if WINDOW[0] - 1e-9 <= t <= WINDOW[1] + 1e-9:
-                states.append(corner_state(path, kernel, h_factor * SPACING))
+                if WINDOW[0] - 1e-9 <= snapshot.attrs["time"] <= WINDOW[1] + 1e-9:
+                    states.append(corner_state(snapshot, kernel, h_factor * SPACING))
         count, rho, ratio, pressure = (np.mean([s[n] for s in states]) for n in (0, 1, 2, 4))
         lowest = min(s[3] for s in states)
         table.append([label, f"{count:.1f}", f"{rho:.1f}", f"{ratio:.3f} ({lowest:.3f})",

@@ -55,9 +55,9 @@ SOUND_SPEEDS = [  # (key, rule, c0 in m/s, water)
      DEFAULT_WATER),
     ("quiet", "10 sqrt(2 g H), the code's rule; the water at h = 2 dx", RULE_C0, QUIET_WATER),
 ]
+SPACINGS = pn.SPACINGS
 # Each row is pn.REALISATIONS runs whose c0 differs by parts per million
 # (pn.realisation): their median and range.
-SPACINGS = pn.SPACINGS
 TARGET = 0.05  # the far-wall noise, rho0 g H
 
 
@@ -174,8 +174,7 @@ def main():
                  "front's RMS relative error against Martin & Moyce (T <= 3.1); and the cost "
                  "(a step's work does not change with c0, but does with h): steps per "
                  "simulated second (from the runs' dt) and the runs' CPU time per simulated "
-                 "second, on the "
-                 "shared machine. Produced by `scripts/sound_speed_noise.py`.")
+                 "second, on the shared machine. Produced by `scripts/sound_speed_noise.py`.")
     print(open(path).read())
     print("wrote", figure)
 
